@@ -1,0 +1,64 @@
+// Copyright (c) 2026 The CGAL Surface Winding Numbers project.
+// SPDX-License-Identifier: MIT
+
+#ifndef CGAL_SURFACE_WINDING_NUMBERS_SOLVE_REPORT_H
+#define CGAL_SURFACE_WINDING_NUMBERS_SOLVE_REPORT_H
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+
+namespace CGAL {
+namespace Surface_winding_numbers {
+
+/// \ingroup PkgSurfaceWindingNumbersRef
+/// Exception thrown inside the package when the input cannot be processed (non-triangle face,
+/// chain on a border edge, non-finite coordinates, degenerate face, ...). The functions returning
+/// `bool` catch it and copy its message to `Solve_report::error`.
+struct Invalid_input : std::runtime_error
+{
+  explicit Invalid_input(const std::string& what) : std::runtime_error(what) {}
+};
+
+/// \ingroup PkgSurfaceWindingNumbersRef
+/// Exception thrown inside the package when a numerical step fails (factorization, linear program).
+struct Solver_failure : std::runtime_error
+{
+  explicit Solver_failure(const std::string& what) : std::runtime_error(what) {}
+};
+
+/// \ingroup PkgSurfaceWindingNumbersRef
+/// Outcome of a linear program solve, as reported by a model of `SurfaceWindingNumbersLPTraits`.
+enum class LP_status { OPTIMAL, INFEASIBLE, UNBOUNDED, FAILED };
+
+/// \ingroup PkgSurfaceWindingNumbersRef
+/// What a solve did: filled by `Surface_winding_numbers_solver::solve()` and, through the named
+/// parameter `report`, by `CGAL::surface_winding_numbers()`.
+struct Solve_report
+{
+  bool success = false;              ///< `true` iff all outputs were written
+  std::string error;                 ///< why the solve failed (empty on success)
+
+  std::size_t vertices = 0, edges = 0, faces = 0;
+  std::size_t components = 0;        ///< connected components of the mesh
+  std::size_t border_edges = 0;
+  int genus = 0;                     ///< sum of the genera of the components
+  std::size_t curve_edges = 0;       ///< edges with a nonzero chain value
+  std::size_t interior_endpoints = 0;///< vertices not on the border where the chain has a boundary
+  bool homology_correction = false;  ///< `false` when every component is a disk or a sphere (one solve)
+  bool hodge_projection = false;     ///< `true` when the harmonic part was projected (open curves)
+  bool lp_ran = false;               ///< the residual function (Eq. 11) was computed
+  std::size_t lp_variables = 0, lp_rows = 0;
+  double lp_objective = 0;           ///< Eq. 11 objective, curve edges weighted by epsilon, lengths in units of the mean edge length
+  std::size_t degenerate_weights = 0;///< cotangent weights clamped to [1e-3, 1e3]
+  int min_label = 0, max_label = 0;
+
+  /// seconds spent in each step
+  double time_setup = 0, time_jump_laplace = 0, time_hodge = 0, time_residual = 0,
+         time_second_solve = 0, time_labels = 0, time_total = 0;
+};
+
+} // namespace Surface_winding_numbers
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,307 @@
+// Copyright (c) 2026 The CGAL Surface Winding Numbers project.
+// SPDX-License-Identifier: MIT
+
+#ifndef CGAL_SURFACE_WINDING_NUMBERS_SURFACE_WINDING_NUMBERS_SOLVER_H
+#define CGAL_SURFACE_WINDING_NUMBERS_SURFACE_WINDING_NUMBERS_SOLVER_H
+
+#include <CGAL/Surface_winding_numbers/Solve_report.h>
+#include <CGAL/Surface_winding_numbers/parameters.h>
+#include <CGAL/Surface_winding_numbers/internal/pipeline.h>
+#ifdef CGAL_USE_GLPK
+#include <CGAL/Surface_winding_numbers/GLPK_linear_program_traits.h>
+#endif
+
+#include <CGAL/Default.h>
+#include <CGAL/Dynamic_property_map.h>
+#include <CGAL/Eigen_solver_traits.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <exception>
+#include <functional>
+#include <memory>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_winding_numbers {
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// Placeholder LP used when no LP backend is available and none was given.
+struct No_linear_program_traits
+{
+  static const char* name() { return "none"; }
+  static double infinity() { return std::numeric_limits<double>::infinity(); }
+  void resize(std::size_t, std::size_t) {}
+  void reserve_A(std::size_t) {}
+  void set_q(std::size_t, double) {}
+  void set_variable_bounds(std::size_t, double, double) {}
+  void set_A(std::size_t, std::size_t, double) {}
+  void set_l(std::size_t, double) {}
+  void set_u(std::size_t, double) {}
+  template <class OutputIterator>
+  LP_status solve(OutputIterator)
+  {
+    throw Solver_failure("this surface needs the residual linear program, but no LP solver is available: "
+                         "build with GLPK (CGAL_USE_GLPK) or pass one with lp_solver(std::ref(lp))");
+  }
+};
+
+#ifdef CGAL_USE_GLPK
+typedef GLPK_linear_program_traits Default_linear_program_traits;
+#else
+typedef No_linear_program_traits Default_linear_program_traits;
+#endif
+
+typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<CGAL::Eigen_sparse_matrix<double>::EigenType>>
+  Default_sparse_solver;
+
+} // namespace internal
+/// \endcond
+
+/*!
+\ingroup PkgSurfaceWindingNumbersRef
+
+\brief computes surface winding numbers for many curves on one triangle mesh.
+
+The constructor extracts the mesh into flat index tables, checks it (triangles only, finite
+coordinates, no zero-area face) and computes the cotan weights. The 2-form Laplacian used by the
+Hodge projection is factorized the first time a curve with interior endpoints needs it and then
+kept. The jump Laplacian depends on the curve's endpoints: it is factorized once per `solve()` and
+used for both of its jump Laplace solves.
+
+The mesh must not be modified while the solver is in use.
+
+\tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+\tparam SparseLinearSolver a model of `SparseLinearAlgebraWithFactorTraits_d` for symmetric positive
+        definite systems; its instances are default-constructed (one per factorization).
+        Default: `CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<CGAL::Eigen_sparse_matrix<double>::%EigenType> >`.
+*/
+template <class TriangleMesh, class SparseLinearSolver = CGAL::Default>
+class Surface_winding_numbers_solver
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::vertex_descriptor vertex_descriptor;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  typedef typename GT::edge_descriptor edge_descriptor;
+  typedef typename GT::face_descriptor face_descriptor;
+  typedef typename CGAL::Default::Get<SparseLinearSolver, internal::Default_sparse_solver>::type LA;
+  typedef typename boost::property_map<TriangleMesh, CGAL::dynamic_vertex_property_t<std::size_t>>::const_type VIM;
+  typedef typename boost::property_map<TriangleMesh, CGAL::dynamic_edge_property_t<std::size_t>>::const_type EIM;
+  typedef typename boost::property_map<TriangleMesh, CGAL::dynamic_face_property_t<std::size_t>>::const_type FIM;
+
+public:
+  /*!
+  builds the solver for `tm`.
+  \tparam NamedParameters a sequence of named parameters
+  \param np optional: `vertex_point_map` (default: the internal point map of `tm`) and `geom_traits`
+         (default: the kernel of the point type), as everywhere in CGAL.
+  If the mesh is invalid, `is_valid()` is `false`, `report().error` says why, and `solve()` fails.
+  */
+  template <class NamedParameters = CGAL::parameters::Default_named_parameters>
+  explicit Surface_winding_numbers_solver(const TriangleMesh& tm,
+                                          const NamedParameters& np = CGAL::parameters::default_values())
+    : tm_(tm), vim_(get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm)),
+      eim_(get(CGAL::dynamic_edge_property_t<std::size_t>(), tm)),
+      fim_(get(CGAL::dynamic_face_property_t<std::size_t>(), tm))
+  {
+    using CGAL::parameters::choose_parameter;
+    using CGAL::parameters::get_parameter;
+    typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
+    typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type Traits;
+    VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                               get_const_property_map(CGAL::vertex_point, tm));
+    Traits traits = choose_parameter<Traits>(get_parameter(np, CGAL::internal_np::geom_traits));
+    try
+    {
+      core_.reset(new internal::Winding_number_core<LA>(mesh_tables(vpm, traits)));
+      core_->fill_mesh_report(report_);
+    }
+    catch(const std::exception& e)
+    {
+      report_.error = e.what();
+    }
+  }
+
+  /// `true` if the mesh passed the checks of the constructor
+  bool is_valid() const { return core_ != nullptr; }
+
+  /// what the last `solve()` (or the constructor) did
+  const Solve_report& report() const { return report_; }
+
+  /*!
+  computes the winding number labels of the curve `chain` and writes them to `label_map`.
+  \tparam ChainMap a model of `ReadablePropertyMap`, key `edge_descriptor`, integer value: the signed
+          number of times the curves traverse the edge, positive along `halfedge(e, tm)`
+  \tparam LabelMap a model of `WritablePropertyMap`, key `face_descriptor`, integer value
+  \param np optional named parameters among `nonbounding_chain_map`, `nonbounding_chain_real_map`,
+         `bounding_chain_map`, `winding_number_map`, `epsilon`, `lp_solver`, `report`, `verbose`
+         (see `CGAL::surface_winding_numbers()`).
+  \returns `true` on success. On failure no output map is written and `report().error` says why.
+  */
+  template <class ChainMap, class LabelMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
+  bool solve(const ChainMap& chain_map, LabelMap label_map,
+             const NamedParameters& np = CGAL::parameters::default_values())
+  {
+    using CGAL::parameters::choose_parameter;
+    using CGAL::parameters::get_parameter;
+    using CGAL::parameters::get_parameter_reference;
+    using CGAL::parameters::is_default_parameter;
+    namespace snp = Surface_winding_numbers::internal_np;
+
+    const std::string construction_error = report_.error;
+    Solve_report rep;
+    if(core_) core_->fill_mesh_report(rep);
+    try
+    {
+      if(!core_) throw Invalid_input(construction_error);
+      const double epsilon = choose_parameter(get_parameter(np, snp::epsilon), 0.01);
+      const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
+
+      std::vector<double> chain(core_->tables().ne, 0.);
+      for(edge_descriptor e : edges(tm_)) chain[get(eim_, e)] = double(get(chain_map, e));
+
+      internal::Core_result r;
+      if constexpr(is_default_parameter<NamedParameters, snp::lp_solver_t>::value)
+      {
+        internal::Default_linear_program_traits lp;
+        r = core_->solve(chain, epsilon, lp, verbose, rep);
+      }
+      else
+      {
+        auto& lp = get_parameter_reference(np, snp::lp_solver);
+        r = core_->solve(chain, epsilon, lp, verbose, rep);
+      }
+      write_outputs(r, label_map, np);
+      rep.success = true;
+    }
+    catch(const std::exception& e)
+    {
+      rep.success = false;
+      rep.error = e.what();
+    }
+    report_ = rep;
+    if constexpr(!is_default_parameter<NamedParameters, snp::report_t>::value)
+      get_parameter_reference(np, snp::report) = rep;
+    return rep.success;
+  }
+
+  /// \cond SKIP_IN_MANUAL
+  const internal::Mesh_tables& tables() const { return core_->tables(); }
+  std::size_t vertex_index(vertex_descriptor v) const { return get(vim_, v); }
+  std::size_t edge_index(edge_descriptor e) const { return get(eim_, e); }
+  std::size_t face_index(face_descriptor f) const { return get(fim_, f); }
+  /// \endcond
+
+private:
+  template <class VPM, class Traits>
+  internal::Mesh_tables mesh_tables(const VPM& vpm, const Traits& traits)
+  {
+    internal::Mesh_tables m;
+    auto x = traits.compute_x_3_object();
+    auto y = traits.compute_y_3_object();
+    auto z = traits.compute_z_3_object();
+    std::size_t i = 0;
+    for(vertex_descriptor v : vertices(tm_))
+    {
+      put(vim_, v, i++);
+      const auto& p = get(vpm, v);
+      m.points.push_back(CGAL::to_double(x(p)));
+      m.points.push_back(CGAL::to_double(y(p)));
+      m.points.push_back(CGAL::to_double(z(p)));
+    }
+    m.nv = i;
+    i = 0;
+    for(edge_descriptor e : edges(tm_))
+    {
+      put(eim_, e, i++);
+      const halfedge_descriptor h = halfedge(e, tm_);
+      m.ev.push_back(get(vim_, source(h, tm_)));
+      m.ev.push_back(get(vim_, target(h, tm_)));
+    }
+    m.ne = i;
+    i = 0;
+    for(face_descriptor f : faces(tm_))
+    {
+      put(fim_, f, i);
+      halfedge_descriptor h = halfedge(f, tm_);
+      for(int k = 0; k < 3; ++k)
+      {
+        m.fv.push_back(get(vim_, source(h, tm_)));
+        m.fe.push_back(get(eim_, edge(h, tm_)));
+        h = next(h, tm_);
+      }
+      if(h != halfedge(f, tm_))
+        throw Invalid_input("face " + std::to_string(i) + " is not a triangle (" +
+                            std::to_string(degree(f, tm_)) + " vertices): the mesh must be triangulated");
+      ++i;
+    }
+    m.nf = i;
+    if(m.nf == 0) throw Invalid_input("the mesh has no face");
+    internal::finalize_mesh_tables(m);
+    return m;
+  }
+
+  template <class LabelMap, class NamedParameters>
+  void write_outputs(const internal::Core_result& r, LabelMap& label_map, const NamedParameters& np) const
+  {
+    using CGAL::parameters::get_parameter;
+    using CGAL::parameters::is_default_parameter;
+    namespace snp = Surface_winding_numbers::internal_np;
+    typedef typename boost::property_traits<LabelMap>::value_type Label;
+    for(face_descriptor f : faces(tm_)) put(label_map, f, static_cast<Label>(r.labels[get(fim_, f)]));
+
+    if constexpr(!is_default_parameter<NamedParameters, snp::nonbounding_chain_map_t>::value)
+    {
+      auto map = get_parameter(np, snp::nonbounding_chain_map);
+      typedef typename boost::property_traits<decltype(map)>::value_type V;
+      for(edge_descriptor e : edges(tm_)) put(map, e, static_cast<V>(r.G[get(eim_, e)]));
+    }
+    if constexpr(!is_default_parameter<NamedParameters, snp::nonbounding_chain_real_map_t>::value)
+    {
+      auto map = get_parameter(np, snp::nonbounding_chain_real_map);
+      typedef typename boost::property_traits<decltype(map)>::value_type V;
+      for(edge_descriptor e : edges(tm_)) put(map, e, static_cast<V>(r.g[get(eim_, e)]));
+    }
+    if constexpr(!is_default_parameter<NamedParameters, snp::bounding_chain_map_t>::value)
+    {
+      auto map = get_parameter(np, snp::bounding_chain_map);
+      typedef typename boost::property_traits<decltype(map)>::value_type V;
+      for(edge_descriptor e : edges(tm_)) put(map, e, static_cast<V>(r.bounding[get(eim_, e)]));
+    }
+    if constexpr(!is_default_parameter<NamedParameters, snp::winding_number_map_t>::value)
+    {
+      auto map = get_parameter(np, snp::winding_number_map);
+      typedef typename boost::property_traits<decltype(map)>::value_type V;
+      for(face_descriptor f : faces(tm_))
+      {
+        // side k of the face is the halfedge from corner k to corner k+1: its target is corner k+1
+        halfedge_descriptor h = halfedge(f, tm_);
+        const std::size_t fi = get(fim_, f);
+        for(int k = 0; k < 3; ++k)
+        {
+          put(map, h, static_cast<V>(r.w[3 * fi + (k + 1) % 3]));
+          h = next(h, tm_);
+        }
+      }
+    }
+  }
+
+  const TriangleMesh& tm_;
+  VIM vim_;
+  EIM eim_;
+  FIM fim_;
+  std::unique_ptr<internal::Winding_number_core<LA>> core_;
+  Solve_report report_;
+};
+
+} // namespace Surface_winding_numbers
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,205 @@
+// Copyright (c) 2026 The CGAL Surface Winding Numbers project.
+// SPDX-License-Identifier: MIT
+
+#ifndef CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_JUMP_LAPLACE_H
+#define CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_JUMP_LAPLACE_H
+
+#include <CGAL/Surface_winding_numbers/internal/mesh_tables.h>
+
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <numeric>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_winding_numbers {
+namespace internal {
+
+constexpr double chain_tolerance = 1e-9;
+
+// Boundary 0-chain of a 1-chain (paper Sec. 2.2): arrivals minus departures at every vertex.
+inline std::vector<double> chain_boundary(const Mesh_tables& m, const std::vector<double>& chain)
+{
+  std::vector<double> d(m.nv, 0.);
+  for(std::size_t e = 0; e < m.ne; ++e)
+  {
+    d[m.ev[2 * e + 1]] += chain[e];
+    d[m.ev[2 * e]] -= chain[e];
+  }
+  return d;
+}
+
+// Interior endpoints: vertices off the border where the chain has a boundary. Curves may end on
+// the border without creating a singularity (relative homology, paper Sec. 2.2.1).
+inline std::vector<char> interior_endpoints(const Mesh_tables& m, const std::vector<double>& chain)
+{
+  const std::vector<double> d = chain_boundary(m, chain);
+  std::vector<char> endpoint(m.nv, 0);
+  for(std::size_t v = 0; v < m.nv; ++v)
+    endpoint[v] = (std::abs(d[v]) > chain_tolerance && !m.vertex_on_border[v]) ? 1 : 0;
+  return endpoint;
+}
+
+// Prescribed jumps, left minus right, per arc and per endpoint of the arc's edge: jump[2a + k] is
+// the jump measured at vertex ev[2 * edge + k]. The first solve uses Gamma at both ends.
+inline std::vector<double> arc_jumps_from_chain(const Mesh_tables& m, const std::vector<double>& chain)
+{
+  std::vector<double> jump(2 * m.arcs.size());
+  for(std::size_t a = 0; a < m.arcs.size(); ++a) jump[2 * a] = jump[2 * a + 1] = chain[m.arcs[a].edge];
+  return jump;
+}
+
+// Reduced coordinates c (paper Eq. 3): per-corner offsets that realise the prescribed jumps around
+// every vertex. Corners of a vertex are visited across arcs from a root corner with c = 0; the
+// root choice only shifts u0 at that vertex. Excluded vertices (interior endpoints) keep c = 0.
+inline std::vector<double> reduced_coordinates(const Mesh_tables& m, const std::vector<double>& arc_jump,
+                                               const std::vector<char>& excluded)
+{
+  std::vector<double> c(3 * m.nf, 0.);
+  std::vector<char> done(3 * m.nf, 0);
+  std::vector<std::size_t> stack;
+  for(std::size_t v = 0; v < m.nv; ++v)
+  {
+    if(excluded[v]) continue;
+    for(std::size_t i = m.vertex_corner_begin[v]; i < m.vertex_corner_begin[v + 1]; ++i)
+    {
+      const std::size_t root = m.vertex_corners[i];
+      if(done[root]) continue;
+      done[root] = 1;
+      stack.assign(1, root);
+      while(!stack.empty())
+      {
+        const std::size_t cr = stack.back();
+        stack.pop_back();
+        const std::size_t sides[2] = {cr, Mesh_tables::prev_in_face(cr)};   // the two sides of face(cr) at v
+        for(std::size_t s : sides)
+        {
+          const std::size_t e = m.fe[s], a = m.edge_arc[e];
+          if(a == npos) continue;
+          const Arc& arc = m.arcs[a];
+          const bool in_left = (s == arc.left_side);
+          const std::size_t other = in_left ? arc.right_side : arc.left_side;
+          const std::size_t nb = m.corner_at(other / 3, v);
+          if(done[nb]) continue;
+          const double J = arc_jump[2 * a + (m.ev[2 * e] == v ? 0 : 1)];
+          c[nb] = in_left ? c[cr] - J : c[cr] + J;
+          done[nb] = 1;
+          stack.push_back(nb);
+        }
+      }
+    }
+  }
+  return c;
+}
+
+// The jump Laplace system (paper Eqs. 6-8, 10) on V* = vertices minus interior endpoints. The
+// constant null space of every connected component of V* is removed exactly by pinning the
+// component's first vertex (u0 = 0 there), so the matrix is positive definite and b needs no
+// projection. One factorization serves both jump-Laplace solves (u, then w).
+template <class LA>
+class Jump_laplace_system
+{
+public:
+  using Matrix = typename LA::Matrix;
+  using Vector = typename LA::Vector;
+
+  // Assembles and factorizes L restricted to V* (paper Eq. 8).
+  void jump_laplacian(const Mesh_tables& m, const std::vector<double>& weight, const std::vector<char>& excluded)
+  {
+    m_ = &m;
+    weight_ = &weight;
+    excluded_ = excluded;
+    // components of the V* graph, to pin one vertex each
+    std::vector<std::size_t> parent(m.nv);
+    std::iota(parent.begin(), parent.end(), std::size_t(0));
+    auto find = [&](std::size_t x) {
+      while(parent[x] != x) { parent[x] = parent[parent[x]]; x = parent[x]; }
+      return x;
+    };
+    for(std::size_t s = 0; s < 3 * m.nf; ++s)
+    {
+      const std::size_t i = m.tail(s), j = m.head(s);
+      if(excluded[i] || excluded[j]) continue;
+      const std::size_t x = find(i), y = find(j);
+      if(x != y) parent[std::max(x, y)] = std::min(x, y);
+    }
+    dof_.assign(m.nv, npos);
+    std::size_t n = 0;
+    for(std::size_t v = 0; v < m.nv; ++v)
+      if(!excluded[v] && m.vertex_component[v] != npos && find(v) != v) dof_[v] = n++;   // roots are pinned
+    n_ = n;
+    la_.reset(new LA());
+    if(n == 0) return;
+    A_.reset(new Matrix(static_cast<int>(n), static_cast<int>(n)));
+    for(std::size_t s = 0; s < 3 * m.nf; ++s)
+    {
+      const std::size_t i = dof_[m.tail(s)], j = dof_[m.head(s)];
+      const double w = weight[s];
+      if(excluded[m.tail(s)] || excluded[m.head(s)]) continue;
+      if(i != npos) A_->add_coef(i, i, w);
+      if(j != npos) A_->add_coef(j, j, w);
+      if(i != npos && j != npos) { A_->add_coef(i, j, -w); A_->add_coef(j, i, -w); }
+    }
+    double D = 1;
+    if(!la_->factor(*A_, D)) throw Solver_failure("factorization of the jump Laplacian failed");
+  }
+
+  // Right-hand side b (paper Eq. 7, exact per-face form): minimises sum_sides w (u_head - u_tail)^2
+  // over u0 with u = u0 + c at every corner.
+  Vector jump_laplace_rhs(const std::vector<double>& c) const
+  {
+    const Mesh_tables& m = *m_;
+    Vector b(static_cast<int>(n_));
+    for(std::size_t k = 0; k < n_; ++k) b[k] = 0;
+    for(std::size_t s = 0; s < 3 * m.nf; ++s)
+    {
+      const std::size_t vi = m.tail(s), vj = m.head(s);
+      if(excluded_[vi] || excluded_[vj]) continue;
+      const double d = (*weight_)[s] * (c[Mesh_tables::next_in_face(s)] - c[s]);
+      if(dof_[vj] != npos) b[dof_[vj]] -= d;
+      if(dof_[vi] != npos) b[dof_[vi]] += d;
+    }
+    return b;
+  }
+
+  // Solves L u0 = b (paper Eq. 10) and returns the corner values u = u0 + c (NaN at excluded vertices).
+  std::vector<double> solve_jump_laplace(const std::vector<double>& c) const
+  {
+    const Mesh_tables& m = *m_;
+    std::vector<double> u0(m.nv, 0.);
+    if(n_ > 0)
+    {
+      Vector b = jump_laplace_rhs(c);
+      Vector x(static_cast<int>(n_));
+      if(!la_->linear_solver(b, x)) throw Solver_failure("jump Laplace solve failed");
+      for(std::size_t v = 0; v < m.nv; ++v)
+        if(dof_[v] != npos)
+        {
+          u0[v] = x[dof_[v]];
+          if(!std::isfinite(u0[v])) throw Solver_failure("jump Laplace solve produced non-finite values");
+        }
+    }
+    std::vector<double> u(3 * m.nf);
+    for(std::size_t k = 0; k < 3 * m.nf; ++k)
+      u[k] = excluded_[m.fv[k]] ? std::numeric_limits<double>::quiet_NaN() : u0[m.fv[k]] + c[k];
+    return u;
+  }
+
+  std::size_t size() const { return n_; }
+
+private:
+  const Mesh_tables* m_ = nullptr;
+  const std::vector<double>* weight_ = nullptr;
+  std::vector<char> excluded_;
+  std::vector<std::size_t> dof_;
+  std::size_t n_ = 0;
+  std::unique_ptr<Matrix> A_;   // LA::factor keeps a pointer to the matrix: keep it alive
+  std::unique_ptr<LA> la_;
+};
+
+} // namespace internal
+} // namespace Surface_winding_numbers
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,224 @@
+// Copyright (c) 2026 The CGAL Surface Winding Numbers project.
+// SPDX-License-Identifier: MIT
+//
+// Flat, index-based description of a triangle mesh: the only mesh representation the numerical
+// core sees. Built once from a FaceGraph (or, later, from a polygon soup).
+
+#ifndef CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_MESH_TABLES_H
+#define CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_MESH_TABLES_H
+
+#include <CGAL/Surface_winding_numbers/Solve_report.h>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <numeric>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_winding_numbers {
+namespace internal {
+
+constexpr std::size_t npos = std::numeric_limits<std::size_t>::max();
+
+/*
+  Conventions.
+  - Corner c = 3*f + k is vertex fv[c] inside face f (k = 0, 1, 2, in the face's orientation order).
+  - Side s = 3*f + k is the oriented side of face f from corner 3f+k to corner 3f+(k+1)%3; the face
+    lies to the left of its sides. fe[s] is the side's edge, fs[s] = +1 if the side runs along the
+    edge's reference direction ev[2e] -> ev[2e+1], -1 otherwise.
+  - An arc is a pair of faces glued along an edge with opposite orientations: the "left" face is the
+    one whose side runs along the edge's reference direction. Jumps of corner functions across an arc
+    are always measured left minus right. An edge with exactly one side is a border edge; edges with
+    more sides, or with two sides running the same way (nonmanifold or nonorientable gluing), carry no
+    arc and are listed in `unpaired_edges` (the polygon-soup entry point will give them a meaning;
+    the FaceGraph path never produces them).
+*/
+struct Arc
+{
+  std::size_t edge;
+  std::size_t left_side;   // side of the left face (fs = +1)
+  std::size_t right_side;  // side of the right face (fs = -1)
+};
+
+struct Mesh_tables
+{
+  std::size_t nv = 0, nf = 0, ne = 0;
+  std::vector<double> points;        // 3 * nv
+  std::vector<std::size_t> fv;       // 3 * nf, corner -> vertex
+  std::vector<std::size_t> fe;       // 3 * nf, side -> edge
+  std::vector<int> fs;               // 3 * nf, side -> +-1
+  std::vector<std::size_t> ev;       // 2 * ne, reference direction
+
+  std::vector<std::size_t> edge_side_begin, edge_sides;       // CSR edge -> sides
+  std::vector<Arc> arcs;
+  std::vector<std::size_t> edge_arc;                          // edge -> arc or npos
+  std::vector<std::size_t> unpaired_edges;
+  std::vector<char> edge_on_border;                           // exactly one incident side
+  std::vector<std::size_t> vertex_corner_begin, vertex_corners; // CSR vertex -> corners
+  std::vector<char> vertex_on_border;
+
+  // Connected components of faces glued along arcs; isolated vertices belong to none.
+  std::size_t n_components = 0;
+  std::vector<std::size_t> face_component;
+  std::vector<std::size_t> vertex_component;                  // npos for isolated vertices
+  std::vector<long> component_euler_characteristic;           // V - E + F
+  std::vector<std::size_t> component_border_edges;
+  std::vector<std::size_t> component_first_face;
+
+  static std::size_t face_of(std::size_t corner_or_side) { return corner_or_side / 3; }
+  static std::size_t next_in_face(std::size_t c) { return 3 * (c / 3) + (c % 3 + 1) % 3; }
+  static std::size_t prev_in_face(std::size_t c) { return 3 * (c / 3) + (c % 3 + 2) % 3; }
+  // side s joins corners s (tail) and next_in_face(s) (head)
+  std::size_t tail(std::size_t s) const { return fv[s]; }
+  std::size_t head(std::size_t s) const { return fv[next_in_face(s)]; }
+
+  // the corner of face f at vertex v, npos if v is not a vertex of f
+  std::size_t corner_at(std::size_t f, std::size_t v) const
+  {
+    for(std::size_t k = 0; k < 3; ++k)
+      if(fv[3 * f + k] == v) return 3 * f + k;
+    return npos;
+  }
+
+  const double* point(std::size_t v) const { return &points[3 * v]; }
+  double edge_length(std::size_t e) const
+  {
+    const double* p = point(ev[2 * e]);
+    const double* q = point(ev[2 * e + 1]);
+    return std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
+  }
+
+  // A component is simply connected, in the relative sense that matters here (every relative
+  // 1-cycle bounds), when it is a disk (chi = 1, with border) or a sphere (chi = 2).
+  bool component_is_disk_or_sphere(std::size_t c) const
+  {
+    const long chi = component_euler_characteristic[c];
+    return (chi == 1 && component_border_edges[c] > 0) || (chi == 2 && component_border_edges[c] == 0);
+  }
+  bool all_components_disks_or_spheres() const
+  {
+    for(std::size_t c = 0; c < n_components; ++c)
+      if(!component_is_disk_or_sphere(c)) return false;
+    return true;
+  }
+};
+
+// Completes the tables from points, fv, fe, ev (and nv, nf, ne): orientation signs, incidences,
+// arcs, border flags, vertex corner lists and components. Throws Invalid_input on a side whose
+// endpoints do not match its edge.
+inline void finalize_mesh_tables(Mesh_tables& m)
+{
+  const std::size_t nside = 3 * m.nf;
+  m.fs.assign(nside, 0);
+  for(std::size_t s = 0; s < nside; ++s)
+  {
+    const std::size_t e = m.fe[s], a = m.tail(s), b = m.head(s);
+    if(a == m.ev[2 * e] && b == m.ev[2 * e + 1]) m.fs[s] = 1;
+    else if(b == m.ev[2 * e] && a == m.ev[2 * e + 1]) m.fs[s] = -1;
+    else throw Invalid_input("face " + std::to_string(s / 3) + ": side " + std::to_string(s % 3) +
+                           " does not match its edge " + std::to_string(e));
+  }
+
+  // edge -> sides
+  m.edge_side_begin.assign(m.ne + 1, 0);
+  for(std::size_t s = 0; s < nside; ++s) ++m.edge_side_begin[m.fe[s] + 1];
+  for(std::size_t e = 0; e < m.ne; ++e) m.edge_side_begin[e + 1] += m.edge_side_begin[e];
+  m.edge_sides.assign(nside, 0);
+  {
+    std::vector<std::size_t> fill(m.edge_side_begin.begin(), m.edge_side_begin.end() - 1);
+    for(std::size_t s = 0; s < nside; ++s) m.edge_sides[fill[m.fe[s]]++] = s;
+  }
+
+  // arcs and border edges
+  m.arcs.clear();
+  m.unpaired_edges.clear();
+  m.edge_arc.assign(m.ne, npos);
+  m.edge_on_border.assign(m.ne, 0);
+  for(std::size_t e = 0; e < m.ne; ++e)
+  {
+    const std::size_t b = m.edge_side_begin[e], n = m.edge_side_begin[e + 1] - b;
+    if(n == 1) { m.edge_on_border[e] = 1; continue; }
+    if(n == 2)
+    {
+      std::size_t s0 = m.edge_sides[b], s1 = m.edge_sides[b + 1];
+      if(m.fs[s0] == -m.fs[s1])
+      {
+        if(m.fs[s0] < 0) std::swap(s0, s1);
+        m.edge_arc[e] = m.arcs.size();
+        m.arcs.push_back(Arc{e, s0, s1});
+        continue;
+      }
+    }
+    if(n > 0) m.unpaired_edges.push_back(e);
+  }
+
+  // vertex -> corners, border vertices
+  m.vertex_corner_begin.assign(m.nv + 1, 0);
+  for(std::size_t c = 0; c < nside; ++c) ++m.vertex_corner_begin[m.fv[c] + 1];
+  for(std::size_t v = 0; v < m.nv; ++v) m.vertex_corner_begin[v + 1] += m.vertex_corner_begin[v];
+  m.vertex_corners.assign(nside, 0);
+  {
+    std::vector<std::size_t> fill(m.vertex_corner_begin.begin(), m.vertex_corner_begin.end() - 1);
+    for(std::size_t c = 0; c < nside; ++c) m.vertex_corners[fill[m.fv[c]]++] = c;
+  }
+  m.vertex_on_border.assign(m.nv, 0);
+  for(std::size_t e = 0; e < m.ne; ++e)
+    if(m.edge_on_border[e]) m.vertex_on_border[m.ev[2 * e]] = m.vertex_on_border[m.ev[2 * e + 1]] = 1;
+
+  // face components through arcs (union-find)
+  std::vector<std::size_t> parent(m.nf);
+  std::iota(parent.begin(), parent.end(), std::size_t(0));
+  auto find = [&](std::size_t x) {
+    while(parent[x] != x) { parent[x] = parent[parent[x]]; x = parent[x]; }
+    return x;
+  };
+  for(const Arc& a : m.arcs)
+  {
+    const std::size_t x = find(a.left_side / 3), y = find(a.right_side / 3);
+    if(x != y) parent[std::max(x, y)] = std::min(x, y);
+  }
+  // faces sharing only a vertex (or a nonmanifold edge) are also one component for labelling
+  for(std::size_t v = 0; v < m.nv; ++v)
+    for(std::size_t i = m.vertex_corner_begin[v] + 1; i < m.vertex_corner_begin[v + 1]; ++i)
+    {
+      const std::size_t x = find(m.vertex_corners[i] / 3), y = find(m.vertex_corners[m.vertex_corner_begin[v]] / 3);
+      if(x != y) parent[std::max(x, y)] = std::min(x, y);
+    }
+  m.face_component.assign(m.nf, npos);
+  m.component_first_face.clear();
+  m.n_components = 0;
+  for(std::size_t f = 0; f < m.nf; ++f)
+  {
+    const std::size_t r = find(f);
+    if(m.face_component[r] == npos)
+    {
+      m.face_component[r] = m.n_components++;
+      m.component_first_face.push_back(r);
+    }
+    m.face_component[f] = m.face_component[r];
+  }
+  m.vertex_component.assign(m.nv, npos);
+  for(std::size_t c = 0; c < nside; ++c) m.vertex_component[m.fv[c]] = m.face_component[c / 3];
+
+  m.component_euler_characteristic.assign(m.n_components, 0);
+  m.component_border_edges.assign(m.n_components, 0);
+  for(std::size_t f = 0; f < m.nf; ++f) ++m.component_euler_characteristic[m.face_component[f]];
+  for(std::size_t v = 0; v < m.nv; ++v)
+    if(m.vertex_component[v] != npos) ++m.component_euler_characteristic[m.vertex_component[v]];
+  for(std::size_t e = 0; e < m.ne; ++e)
+  {
+    if(m.edge_side_begin[e + 1] == m.edge_side_begin[e]) continue;  // edge without faces
+    const std::size_t c = m.face_component[m.edge_sides[m.edge_side_begin[e]] / 3];
+    --m.component_euler_characteristic[c];
+    if(m.edge_on_border[e]) ++m.component_border_edges[c];
+  }
+}
+
+} // namespace internal
+} // namespace Surface_winding_numbers
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_MESH_TABLES_H

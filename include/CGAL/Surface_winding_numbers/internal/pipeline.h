@@ -1,0 +1,227 @@
+// Copyright (c) 2026 The CGAL Surface Winding Numbers project.
+// SPDX-License-Identifier: MIT
+//
+// The whole method on flat tables: u (jump Laplace) -> omega (Darboux) -> gamma (Hodge) ->
+// v (residual) -> w (second solve) -> W, G, bounding chain.
+
+#ifndef CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_PIPELINE_H
+#define CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_PIPELINE_H
+
+#include <CGAL/Surface_winding_numbers/Solve_report.h>
+#include <CGAL/Surface_winding_numbers/internal/cotan_weights.h>
+#include <CGAL/Surface_winding_numbers/internal/derivatives.h>
+#include <CGAL/Surface_winding_numbers/internal/harmonic_part.h>
+#include <CGAL/Surface_winding_numbers/internal/jump_laplace.h>
+#include <CGAL/Surface_winding_numbers/internal/mesh_tables.h>
+#include <CGAL/Surface_winding_numbers/internal/residual.h>
+#include <CGAL/Surface_winding_numbers/internal/winding_number.h>
+
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_winding_numbers {
+namespace internal {
+
+struct Core_result
+{
+  std::vector<int> labels;          // W per face (normalized)
+  std::vector<double> w;            // per corner, shifted like the labels; NaN at interior endpoints
+  std::vector<double> u, v;         // per corner: first jump-harmonic function and residual
+  std::vector<double> g;            // per edge, J v
+  std::vector<int> G, bounding;     // per edge
+};
+
+class Stopwatch
+{
+public:
+  Stopwatch() : t0_(std::chrono::steady_clock::now()) {}
+  double lap()
+  {
+    const auto t = std::chrono::steady_clock::now();
+    const double s = std::chrono::duration<double>(t - t0_).count();
+    t0_ = t;
+    return s;
+  }
+private:
+  std::chrono::steady_clock::time_point t0_;
+};
+
+template <class LA>
+class Winding_number_core
+{
+public:
+  // Per-mesh work: validation, cotan weights, Hodge star. The 2-form Laplacian is factorized the
+  // first time an open curve needs the Hodge projection, then kept.
+  explicit Winding_number_core(Mesh_tables tables) : m_(std::move(tables))
+  {
+    if(m_.nf == 0) throw Invalid_input("the mesh has no face");
+    if(!m_.unpaired_edges.empty())
+    {
+      const std::size_t e = m_.unpaired_edges.front();
+      throw Invalid_input("edge " + std::to_string(e) + " (vertices " + std::to_string(m_.ev[2 * e]) + ", " +
+                          std::to_string(m_.ev[2 * e + 1]) + ") is nonmanifold or joins faces of opposite orientation");
+    }
+    check_geometry(m_);
+    clamped_weights_ = cotan_weights(m_, weight_);
+    star_ = edge_hodge_star(m_, weight_);
+  }
+
+  const Mesh_tables& tables() const { return m_; }
+  std::size_t clamped_weights() const { return clamped_weights_; }
+
+  template <class LP>
+  Core_result solve(const std::vector<double>& chain, double epsilon, LP& lp, bool verbose, Solve_report& rep)
+  {
+    if(chain.size() != m_.ne) throw Invalid_input("the chain has the wrong size");
+    if(!(epsilon > 0) || !std::isfinite(epsilon)) throw Invalid_input("epsilon must be positive and finite");
+    Stopwatch clock, total;
+    fill_mesh_report(rep);
+    rep.curve_edges = 0;
+    for(std::size_t e = 0; e < m_.ne; ++e)
+    {
+      if(!std::isfinite(chain[e])) throw Invalid_input("edge " + std::to_string(e) + " has a non-finite chain value");
+      if(std::abs(chain[e]) <= chain_tolerance) continue;
+      ++rep.curve_edges;
+      if(m_.edge_arc[e] == npos)
+        throw Invalid_input("edge " + std::to_string(e) + " (vertices " + std::to_string(m_.ev[2 * e]) + ", " +
+                            std::to_string(m_.ev[2 * e + 1]) + ") is on the border of the mesh and carries the chain value " +
+                            std::to_string(chain[e]) + ": curves may end on the border but not run along it");
+    }
+    const std::vector<char> endpoint = interior_endpoints(m_, chain);
+    rep.interior_endpoints = 0;
+    for(char c : endpoint) rep.interior_endpoints += c ? 1 : 0;
+    rep.time_setup = clock.lap();
+    if(verbose)
+      std::cerr << "[swn] " << m_.nv << " vertices, " << m_.nf << " faces, " << m_.n_components << " component(s), "
+                << rep.curve_edges << " curve edges, " << rep.interior_endpoints << " interior endpoints\n";
+
+    Core_result r;
+    // u: jump Laplace solve (Eq. 10) with jumps Gamma
+    Jump_laplace_system<LA> L;
+    L.jump_laplacian(m_, weight_, endpoint);
+    r.u = L.solve_jump_laplace(reduced_coordinates(m_, arc_jumps_from_chain(m_, chain), endpoint));
+    rep.time_jump_laplace = clock.lap();
+    if(verbose) std::cerr << "[swn] jump Laplace solve (" << L.size() << " unknowns): " << rep.time_jump_laplace << " s\n";
+
+    rep.homology_correction = !m_.all_components_disks_or_spheres();
+    rep.hodge_projection = false;
+    rep.lp_ran = false;
+    rep.lp_objective = 0;
+    rep.lp_variables = rep.lp_rows = 0;
+    if(!rep.homology_correction)
+    {
+      // Every relative 1-cycle bounds: w = u, v = 0 (one solve).
+      r.w = r.u;
+      r.v.assign(3 * m_.nf, 0.);
+      r.g.assign(m_.ne, 0.);
+    }
+    else
+    {
+      // omega = D u (Eq. 5); gamma = harmonic part (Eq. 9) when the curve has interior endpoints
+      std::vector<double> gamma = darboux_derivative(m_, r.u, endpoint);
+      if(rep.interior_endpoints > 0)
+      {
+        if(!hodge_.assembled()) hodge_.assemble(m_, star_);
+        gamma = hodge_.harmonic_part(gamma);
+        rep.hodge_projection = true;
+      }
+      rep.time_hodge = clock.lap();
+      if(verbose) std::cerr << "[swn] Darboux derivative and harmonic part: " << rep.time_hodge << " s\n";
+
+      // v: residual function (Eq. 11)
+      const std::vector<double> v0 = local_integration(m_, gamma);
+      std::vector<double> s(m_.arcs.size());
+      for(std::size_t a = 0; a < m_.arcs.size(); ++a)
+        s[a] = 0.5 * (corner_jump_at(m_, v0, a, 0) + corner_jump_at(m_, v0, a, 1));
+      const std::vector<double> sigma =
+        residual_function(m_, s, chain, epsilon, lp, rep.lp_objective, rep.lp_variables, rep.lp_rows);
+      rep.lp_ran = true;
+      r.v.resize(3 * m_.nf);
+      for(std::size_t k = 0; k < 3 * m_.nf; ++k) r.v[k] = v0[k] + sigma[k / 3];
+      r.g = jump_derivative(m_, r.v);
+      rep.time_residual = clock.lap();
+      if(verbose)
+        std::cerr << "[swn] residual LP (" << rep.lp_variables << " variables, " << rep.lp_rows
+                  << " rows), objective " << rep.lp_objective << ": " << rep.time_residual << " s\n";
+
+      // w: second jump Laplace solve with jumps Gamma - J v (Sec. 3.5), same factorization
+      r.w = L.solve_jump_laplace(reduced_coordinates(m_, second_solve_jumps(m_, chain, r.v), endpoint));
+      rep.time_second_solve = clock.lap();
+      if(verbose) std::cerr << "[swn] second jump Laplace solve: " << rep.time_second_solve << " s\n";
+    }
+
+    // W: shift tau, rounding, normalization; G; bounding chain
+    const std::vector<double> tau = shift_tau(m_, chain, r.w);
+    r.labels = round_labels(m_, r.w, tau);
+    const std::vector<int> offset = normalize_labels(m_, r.labels);
+    for(std::size_t k = 0; k < 3 * m_.nf; ++k)
+    {
+      const std::size_t c = m_.face_component[k / 3];
+      r.w[k] += tau[c] - offset[c];
+    }
+    r.G = nonbounding_chain(r.g);
+    r.bounding = bounding_chain(m_, r.labels);
+    rep.min_label = rep.max_label = r.labels.empty() ? 0 : r.labels[0];
+    for(int l : r.labels) { rep.min_label = std::min(rep.min_label, l); rep.max_label = std::max(rep.max_label, l); }
+    rep.time_labels = clock.lap();
+    rep.time_total = total.lap();
+    return r;
+  }
+
+  void fill_mesh_report(Solve_report& rep) const
+  {
+    rep.vertices = m_.nv;
+    rep.edges = m_.ne;
+    rep.faces = m_.nf;
+    rep.components = m_.n_components;
+    rep.border_edges = 0;
+    for(char b : m_.edge_on_border) rep.border_edges += b ? 1 : 0;
+    rep.genus = 0;
+    for(std::size_t c = 0; c < m_.n_components; ++c)
+      rep.genus += int((2 - m_.component_euler_characteristic[c] - long(border_loops(c))) / 2);
+    rep.degenerate_weights = clamped_weights_;
+  }
+
+  // number of border loops of component c (border edges chained through their vertices)
+  std::size_t border_loops(std::size_t c) const
+  {
+    if(border_loops_.empty()) count_border_loops();
+    return border_loops_[c];
+  }
+
+private:
+  void count_border_loops() const
+  {
+    border_loops_.assign(m_.n_components, 0);
+    std::vector<std::size_t> next(m_.nv, npos);
+    for(std::size_t e = 0; e < m_.ne; ++e)
+      if(m_.edge_on_border[e])
+      {
+        const std::size_t s = m_.edge_sides[m_.edge_side_begin[e]];
+        next[m_.head(s)] = m_.tail(s);   // walk the border against the face's orientation
+      }
+    std::vector<char> seen(m_.nv, 0);
+    for(std::size_t v = 0; v < m_.nv; ++v)
+    {
+      if(next[v] == npos || seen[v]) continue;
+      ++border_loops_[m_.vertex_component[v]];
+      for(std::size_t x = v; x != npos && !seen[x]; x = next[x]) seen[x] = 1;
+    }
+  }
+
+  Mesh_tables m_;
+  std::vector<double> weight_, star_;
+  std::size_t clamped_weights_ = 0;
+  Two_form_laplacian<LA> hodge_;
+  mutable std::vector<std::size_t> border_loops_;
+};
+
+} // namespace internal
+} // namespace Surface_winding_numbers
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,74 @@
+// Copyright (c) 2026 The CGAL Surface Winding Numbers project.
+// SPDX-License-Identifier: MIT
+
+#ifndef CGAL_SURFACE_WINDING_NUMBERS_PARAMETERS_H
+#define CGAL_SURFACE_WINDING_NUMBERS_PARAMETERS_H
+
+#include <CGAL/Named_function_parameters.h>
+
+namespace CGAL {
+namespace Surface_winding_numbers {
+
+/// \cond SKIP_IN_MANUAL
+namespace internal_np {
+enum nonbounding_chain_map_t { nonbounding_chain_map };
+enum nonbounding_chain_real_map_t { nonbounding_chain_real_map };
+enum bounding_chain_map_t { bounding_chain_map };
+enum winding_number_map_t { winding_number_map };
+enum epsilon_t { epsilon };
+enum lp_solver_t { lp_solver };
+enum report_t { report };
+} // namespace internal_np
+/// \endcond
+
+/*!
+\ingroup PkgSurfaceWindingNumbersRef
+Named parameters of the package. CGAL 5.5 gives no way to add chaining members to its named
+parameter packs, so every parameter of ours comes as a free function in two forms: `name(x)` starts a
+pack, `name(x, np)` adds to the pack `np`. CGAL's own parameters chain as members after ours:
+`epsilon(0.01).verbose(true)`, or come first: `epsilon(0.01, CGAL::parameters::verbose(true))`.
+*/
+namespace parameters {
+
+#define CGAL_SWN_NAMED_PARAMETER(TAG, NAME)                                                          \
+  template <class K>                                                                                 \
+  CGAL::Named_function_parameters<K, internal_np::TAG> NAME(const K& k)                              \
+  {                                                                                                  \
+    return CGAL::Named_function_parameters<K, internal_np::TAG>(k);                                  \
+  }                                                                                                  \
+  template <class K, class T, class Tag, class Base>                                                 \
+  CGAL::Named_function_parameters<K, internal_np::TAG, CGAL::Named_function_parameters<T, Tag, Base>> \
+  NAME(const K& k, const CGAL::Named_function_parameters<T, Tag, Base>& np)                          \
+  {                                                                                                  \
+    return CGAL::Named_function_parameters<K, internal_np::TAG,                                      \
+                                           CGAL::Named_function_parameters<T, Tag, Base>>(k, np);    \
+  }
+
+/// \name Output maps
+/// @{
+/// edge -> integer: the nonbounding loops G, signed along `halfedge(e, tm)`
+CGAL_SWN_NAMED_PARAMETER(nonbounding_chain_map_t, nonbounding_chain_map)
+/// edge -> double: the real-valued nonbounding chain g (jumps of the residual function)
+CGAL_SWN_NAMED_PARAMETER(nonbounding_chain_real_map_t, nonbounding_chain_real_map)
+/// edge -> integer: the closed completion of the bounding curves (jumps of the labels)
+CGAL_SWN_NAMED_PARAMETER(bounding_chain_map_t, bounding_chain_map)
+/// halfedge -> double: w at the corner `(target(h), face(h))`, NaN at interior curve endpoints
+CGAL_SWN_NAMED_PARAMETER(winding_number_map_t, winding_number_map)
+/// `std::ref(Solve_report)`: what the solve did, and why it failed
+CGAL_SWN_NAMED_PARAMETER(report_t, report)
+/// @}
+/// \name Settings
+/// @{
+/// relative cost of jumps of the residual function across the curve (paper: 0.01)
+CGAL_SWN_NAMED_PARAMETER(epsilon_t, epsilon)
+/// `std::ref(lp)` of a model of `SurfaceWindingNumbersLPTraits`
+CGAL_SWN_NAMED_PARAMETER(lp_solver_t, lp_solver)
+/// @}
+
+#undef CGAL_SWN_NAMED_PARAMETER
+
+} // namespace parameters
+} // namespace Surface_winding_numbers
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,129 @@
+// Copyright (c) 2026 The CGAL Surface Winding Numbers project.
+// SPDX-License-Identifier: MIT
+
+#ifndef CGAL_SURFACE_WINDING_NUMBERS_H
+#define CGAL_SURFACE_WINDING_NUMBERS_H
+
+#include <CGAL/Surface_winding_numbers/Solve_report.h>
+#include <CGAL/Surface_winding_numbers/Surface_winding_numbers_solver.h>
+#include <CGAL/Surface_winding_numbers/chain_helpers.h>
+#include <CGAL/Surface_winding_numbers/parameters.h>
+
+#include <CGAL/Named_function_parameters.h>
+
+#include <functional>
+#include <type_traits>
+
+namespace CGAL {
+
+/*!
+\ingroup PkgSurfaceWindingNumbersRef
+
+\brief computes the surface winding numbers of a curve on a triangle mesh (Feng, Gillespie and
+Crane, "Winding Numbers on Discrete Surfaces", SIGGRAPH 2023).
+
+The curve is an integer 1-chain on the edges of `tm`: it may be broken (gaps), self-intersecting,
+end on the border of the mesh, and mix loops that bound regions with loops around handles that bound
+nothing. The function writes, for every face, the integer winding number W of the bounding part of
+the curve: crossing an edge from its right to its left, W increases by the chain value there, so
+the inside of a counter-clockwise loop is one higher than the outside. Gaps are closed and the
+nonbounding loops (around handles, or between border components) are filtered out.
+
+W is defined up to one integer per connected component; the normalization used is: in every
+connected component, the label covering the largest area is 0.
+
+\tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+\tparam ChainMap a model of `ReadablePropertyMap` with key `boost::graph_traits<TriangleMesh>::%edge_descriptor`
+        and an integer value type: the signed number of times the curves traverse the edge,
+        positive along `halfedge(e, tm)` (from its source to its target)
+\tparam LabelMap a model of `WritablePropertyMap` with key
+        `boost::graph_traits<TriangleMesh>::%face_descriptor` and an integer value type
+\tparam NamedParameters a sequence of named parameters
+
+\param tm the triangle mesh
+\param chain the input curves
+\param labels receives W for every face
+\param np an optional sequence of named parameters among the ones listed below
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{vertex_point_map}
+    \cgalParamDescription{a property map associating points to the vertices of `tm`}
+    \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `%Point_3` as value type}
+    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+  \cgalParamNEnd
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{an instance of a geometric traits class}
+    \cgalParamType{a model of `Kernel`}
+    \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
+  \cgalParamNEnd
+  \cgalParamNBegin{sparse_linear_solver}
+    \cgalParamDescription{the solver type used for the symmetric positive definite systems (its instances are default-constructed)}
+    \cgalParamType{a model of `SparseLinearAlgebraWithFactorTraits_d`}
+    \cgalParamDefault{`CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<CGAL::Eigen_sparse_matrix<double>::%EigenType> >`}
+  \cgalParamNEnd
+  \cgalParamNBegin{verbose}
+    \cgalParamDescription{prints the steps and their timings to `std::cerr`}
+    \cgalParamType{Boolean}
+    \cgalParamDefault{`false`}
+  \cgalParamNEnd
+  \cgalParamNBegin{Surface_winding_numbers::parameters::nonbounding_chain_map}
+    \cgalParamDescription{receives the integer nonbounding loops G (same sign convention as `chain`)}
+    \cgalParamType{a model of `WritablePropertyMap`, key `edge_descriptor`, integer value}
+    \cgalParamDefault{not written}
+  \cgalParamNEnd
+  \cgalParamNBegin{Surface_winding_numbers::parameters::nonbounding_chain_real_map}
+    \cgalParamDescription{receives the real-valued nonbounding chain g, the jumps of the residual function}
+    \cgalParamType{a model of `WritablePropertyMap`, key `edge_descriptor`, value `double`}
+    \cgalParamDefault{not written}
+  \cgalParamNEnd
+  \cgalParamNBegin{Surface_winding_numbers::parameters::bounding_chain_map}
+    \cgalParamDescription{receives the closed completion of the bounding curves, the jumps of W}
+    \cgalParamType{a model of `WritablePropertyMap`, key `edge_descriptor`, integer value}
+    \cgalParamDefault{not written}
+  \cgalParamNEnd
+  \cgalParamNBegin{Surface_winding_numbers::parameters::winding_number_map}
+    \cgalParamDescription{receives w at the corner `(target(h), face(h))` of every halfedge `h` not on the border, shifted like the labels so that W is the rounded mean of w over a face; NaN at interior endpoints of the curve}
+    \cgalParamType{a model of `WritablePropertyMap`, key `halfedge_descriptor`, value `double`}
+    \cgalParamDefault{not written}
+  \cgalParamNEnd
+  \cgalParamNBegin{Surface_winding_numbers::parameters::epsilon}
+    \cgalParamDescription{relative cost of jumps of the residual function across the curve against jumps elsewhere (paper Eq. 11)}
+    \cgalParamType{`double`, positive}
+    \cgalParamDefault{`0.01`}
+  \cgalParamNEnd
+  \cgalParamNBegin{Surface_winding_numbers::parameters::lp_solver}
+    \cgalParamDescription{the solver of the residual linear program, passed with `std::ref()`}
+    \cgalParamType{a model of `SurfaceWindingNumbersLPTraits`}
+    \cgalParamDefault{`CGAL::Surface_winding_numbers::GLPK_linear_program_traits`}
+    \cgalParamExtra{only used when a component of the mesh is neither a disk nor a sphere}
+  \cgalParamNEnd
+  \cgalParamNBegin{Surface_winding_numbers::parameters::report}
+    \cgalParamDescription{receives what the solve did (sizes, topology, LP size and objective, timings) and, on failure, why}
+    \cgalParamType{`std::reference_wrapper<CGAL::Surface_winding_numbers::Solve_report>`}
+    \cgalParamDefault{not written}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns `true` on success. On failure (non-triangle face, empty mesh, non-finite coordinates,
+zero-area face, nonzero chain value on a border edge, failed factorization or linear program),
+no output map is written, and the named parameter `report` tells why.
+
+\sa `CGAL::Surface_winding_numbers::Surface_winding_numbers_solver`
+*/
+template <class TriangleMesh, class ChainMap, class LabelMap,
+          class NamedParameters = parameters::Default_named_parameters>
+bool surface_winding_numbers(const TriangleMesh& tm, const ChainMap& chain, LabelMap labels,
+                             const NamedParameters& np = parameters::default_values())
+{
+  using parameters::get_parameter;
+  typedef typename internal_np::Lookup_named_param_def<internal_np::sparse_linear_solver_t, NamedParameters,
+                                                       CGAL::Default>::type Solver_param;
+  typedef std::conditional_t<std::is_same<Solver_param, CGAL::Default>::value, CGAL::Default,
+                             std::remove_cv_t<std::remove_reference_t<Solver_param>>> LA;
+  Surface_winding_numbers::Surface_winding_numbers_solver<TriangleMesh, LA> solver(tm, np);
+  return solver.solve(chain, labels, np);
+}
+
+} // namespace CGAL
+
+#endif
