@@ -1,0 +1,413 @@
+// Stage-by-stage tests of the numerical core (flat tables), of the LP traits and of the solver class.
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/surface_winding_numbers.h>
+#include <CGAL/Surface_winding_numbers/GLPK_linear_program_traits.h>
+#include <CGAL/Surface_winding_numbers/internal/pipeline.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <random>
+#include <vector>
+
+namespace {
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+typedef Mesh::Vertex_index Vertex;
+namespace SWN = CGAL::Surface_winding_numbers;
+namespace SI = CGAL::Surface_winding_numbers::internal;
+typedef SI::Default_sparse_solver LA;
+
+// n x n grid on [0,1]^2 (a disk), diagonals chosen at random
+std::vector<Vertex> grid_disk(Mesh& m, int n, unsigned seed = 1, double jitter = 0.2)
+{
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> U(-jitter / n, jitter / n);
+  std::vector<Vertex> vs;
+  for(int j = 0; j <= n; ++j)
+    for(int i = 0; i <= n; ++i)
+    {
+      const bool border = i == 0 || j == 0 || i == n || j == n;
+      vs.push_back(m.add_vertex(K::Point_3(double(i) / n + (border ? 0 : U(rng)), double(j) / n + (border ? 0 : U(rng)), 0)));
+    }
+  auto V = [&](int i, int j) { return vs[j * (n + 1) + i]; };
+  std::bernoulli_distribution coin(0.5);
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i)
+      if(coin(rng)) { m.add_face(V(i, j), V(i + 1, j), V(i + 1, j + 1)); m.add_face(V(i, j), V(i + 1, j + 1), V(i, j + 1)); }
+      else { m.add_face(V(i, j), V(i + 1, j), V(i, j + 1)); m.add_face(V(i + 1, j), V(i + 1, j + 1), V(i, j + 1)); }
+  return vs;
+}
+
+std::vector<Vertex> torus_mesh(Mesh& m, int nu, int nv)
+{
+  const double pi = 3.14159265358979323846;
+  std::vector<Vertex> vs;
+  for(int i = 0; i < nu; ++i)
+    for(int j = 0; j < nv; ++j)
+    {
+      const double a = 2 * pi * i / nu, b = 2 * pi * j / nv;
+      vs.push_back(m.add_vertex(K::Point_3((1 + 0.4 * std::cos(b)) * std::cos(a), (1 + 0.4 * std::cos(b)) * std::sin(a), 0.4 * std::sin(b))));
+    }
+  auto V = [&](int i, int j) { return vs[((i % nu + nu) % nu) * nv + (j % nv + nv) % nv]; };
+  for(int i = 0; i < nu; ++i)
+    for(int j = 0; j < nv; ++j) { m.add_face(V(i, j), V(i + 1, j), V(i + 1, j + 1)); m.add_face(V(i, j), V(i + 1, j + 1), V(i, j + 1)); }
+  return vs;
+}
+
+// the chain of a vertex polyline as a vector indexed like the solver's tables
+std::vector<double> table_chain(const Mesh& m, const SWN::Surface_winding_numbers_solver<Mesh>& s,
+                                const std::vector<std::vector<Vertex>>& polylines)
+{
+  auto map = get(CGAL::dynamic_edge_property_t<int>(), m);
+  for(auto e : edges(m)) put(map, e, 0);
+  for(const auto& p : polylines) EXPECT_TRUE(SWN::add_vertex_polyline_to_chain(m, p, map));
+  std::vector<double> c(num_edges(m), 0.);
+  for(auto e : edges(m)) c[s.edge_index(e)] = get(map, e);
+  return c;
+}
+
+std::vector<Vertex> square_loop(const std::vector<Vertex>& vs, int n, int i0, int j0, int i1, int j1)
+{
+  auto V = [&](int i, int j) { return vs[j * (n + 1) + i]; };
+  std::vector<Vertex> loop;
+  for(int i = i0; i < i1; ++i) loop.push_back(V(i, j0));
+  for(int j = j0; j < j1; ++j) loop.push_back(V(i1, j));
+  for(int i = i1; i > i0; --i) loop.push_back(V(i, j1));
+  for(int j = j1; j >= j0; --j) loop.push_back(V(i0, j));
+  return loop;
+}
+} // namespace
+
+TEST(MeshTables, GridIsADiskWithConsistentArcs)
+{
+  Mesh m;
+  grid_disk(m, 6);
+  SWN::Surface_winding_numbers_solver<Mesh> s(m);
+  ASSERT_TRUE(s.is_valid()) << s.report().error;
+  const SI::Mesh_tables& t = s.tables();
+  EXPECT_EQ(t.nf, 72u);
+  EXPECT_EQ(t.n_components, 1u);
+  EXPECT_EQ(t.component_euler_characteristic[0], 1);
+  EXPECT_EQ(t.component_border_edges[0], 24u);
+  EXPECT_TRUE(t.all_components_disks_or_spheres());
+  EXPECT_EQ(t.arcs.size() + 24, t.ne);
+  for(const SI::Arc& a : t.arcs)
+  {
+    EXPECT_EQ(t.fs[a.left_side], 1);
+    EXPECT_EQ(t.fs[a.right_side], -1);
+    EXPECT_EQ(t.tail(a.left_side), t.head(a.right_side));
+    EXPECT_EQ(t.head(a.left_side), t.tail(a.right_side));
+  }
+}
+
+TEST(MeshTables, TorusAndTwoComponents)
+{
+  Mesh m;
+  torus_mesh(m, 8, 6);
+  Mesh::Vertex_index a = m.add_vertex(K::Point_3(5, 0, 0)), b = m.add_vertex(K::Point_3(6, 0, 0)),
+                     c = m.add_vertex(K::Point_3(5, 1, 0));
+  m.add_face(a, b, c);
+  SWN::Surface_winding_numbers_solver<Mesh> s(m);
+  ASSERT_TRUE(s.is_valid());
+  const SI::Mesh_tables& t = s.tables();
+  ASSERT_EQ(t.n_components, 2u);
+  EXPECT_EQ(t.component_euler_characteristic[0], 0);
+  EXPECT_EQ(t.component_euler_characteristic[1], 1);
+  EXPECT_FALSE(t.all_components_disks_or_spheres());
+  EXPECT_EQ(s.report().genus, 1);
+}
+
+TEST(CotanWeights, ValuesClampAndScaleInvariance)
+{
+  SI::Mesh_tables t;
+  t.nv = 3; t.nf = 1; t.ne = 3;
+  const double h = std::sqrt(3.) / 2;
+  t.points = {0, 0, 0, 1, 0, 0, 0.5, h, 0};
+  t.fv = {0, 1, 2};
+  t.fe = {0, 1, 2};
+  t.ev = {0, 1, 1, 2, 2, 0};
+  SI::finalize_mesh_tables(t);
+  std::vector<double> w;
+  EXPECT_EQ(SI::cotan_weights(t, w), 0u);
+  for(double x : w) EXPECT_NEAR(x, 0.5 / std::sqrt(3.), 1e-14);   // cot 60 / 2
+  for(double& x : t.points) x *= 1e8;
+  std::vector<double> w2;
+  SI::cotan_weights(t, w2);
+  for(int k = 0; k < 3; ++k) EXPECT_NEAR(w2[k], w[k], 1e-14);
+  // right angle at vertex 0: the side opposite gets cot 90 / 2 = 0 -> clamped
+  t.points = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  EXPECT_EQ(SI::cotan_weights(t, w), 1u);
+  EXPECT_DOUBLE_EQ(w[1], SI::min_cotan_weight);
+  EXPECT_NEAR(w[0], 0.5, 1e-14);
+}
+
+TEST(CotanWeights, DegenerateAndNonFiniteInputAreRejected)
+{
+  SI::Mesh_tables t;
+  t.nv = 3; t.nf = 1; t.ne = 3;
+  t.points = {0, 0, 0, 1, 0, 0, 2, 0, 0};   // collinear
+  t.fv = {0, 1, 2};
+  t.fe = {0, 1, 2};
+  t.ev = {0, 1, 1, 2, 2, 0};
+  SI::finalize_mesh_tables(t);
+  EXPECT_THROW(SI::check_geometry(t), SWN::Invalid_input);
+  t.points = {0, 0, 0, 1, 0, 0, 0, std::nan(""), 0};
+  EXPECT_THROW(SI::check_geometry(t), SWN::Invalid_input);
+}
+
+TEST(JumpLaplace, ReducedCoordinatesRealiseTheJumps)
+{
+  Mesh m;
+  const int n = 12;
+  auto vs = grid_disk(m, n, 3);
+  SWN::Surface_winding_numbers_solver<Mesh> s(m);
+  const SI::Mesh_tables& t = s.tables();
+  // an open path (two interior endpoints) plus a closed loop crossing it
+  std::vector<Vertex> path, loop = square_loop(vs, n, 2, 2, 8, 7);
+  for(int i = 1; i <= 10; ++i) path.push_back(vs[5 * (n + 1) + i]);
+  const std::vector<double> chain = table_chain(m, s, {path, loop});
+  const std::vector<char> endpoint = SI::interior_endpoints(t, chain);
+  EXPECT_EQ(std::count(endpoint.begin(), endpoint.end(), 1), 2);
+  const std::vector<double> jumps = SI::arc_jumps_from_chain(t, chain);
+  const std::vector<double> c = SI::reduced_coordinates(t, jumps, endpoint);
+  for(std::size_t a = 0; a < t.arcs.size(); ++a)
+    for(int k = 0; k < 2; ++k)
+    {
+      const std::size_t v = t.ev[2 * t.arcs[a].edge + k];
+      if(endpoint[v]) continue;
+      EXPECT_NEAR(SI::corner_jump_at(t, c, a, k), chain[t.arcs[a].edge], 1e-14);
+    }
+}
+
+TEST(JumpLaplace, ClosedLoopGivesTwoValuedFunctionAndExactJumps)
+{
+  Mesh m;
+  const int n = 16;
+  auto vs = grid_disk(m, n, 5);
+  SWN::Surface_winding_numbers_solver<Mesh> s(m);
+  const SI::Mesh_tables& t = s.tables();
+  const std::vector<double> chain = table_chain(m, s, {square_loop(vs, n, 4, 3, 11, 12)});
+  const std::vector<char> endpoint = SI::interior_endpoints(t, chain);
+  std::vector<double> w;
+  SI::cotan_weights(t, w);
+  SI::Jump_laplace_system<LA> L;
+  L.jump_laplacian(t, w, endpoint);
+  EXPECT_EQ(L.size(), t.nv - 1);   // one pinned vertex
+  const std::vector<double> u = L.solve_jump_laplace(SI::reduced_coordinates(t, SI::arc_jumps_from_chain(t, chain), endpoint));
+  double lo = 1e9, hi = -1e9;
+  for(double x : u) { lo = std::min(lo, x); hi = std::max(hi, x); }
+  EXPECT_NEAR(hi - lo, 1., 1e-9);
+  for(std::size_t a = 0; a < t.arcs.size(); ++a)
+    for(int k = 0; k < 2; ++k) EXPECT_NEAR(SI::corner_jump_at(t, u, a, k), chain[t.arcs[a].edge], 1e-9);
+  // omega = D u vanishes for a two-valued u
+  for(double o : SI::darboux_derivative(t, u, endpoint)) EXPECT_NEAR(o, 0., 1e-9);
+}
+
+TEST(HarmonicPart, GammaIsClosedToRoundOffAndKeepsThePeriod)
+{
+  Mesh m;
+  const int nu = 24, nv = 12;
+  auto vs = torus_mesh(m, nu, nv);
+  SWN::Surface_winding_numbers_solver<Mesh> s(m);
+  const SI::Mesh_tables& t = s.tables();
+  std::vector<Vertex> a, b;   // a meridian with a 2-edge gap
+  for(int j = 0; j <= 4; ++j) a.push_back(vs[3 * nv + j]);
+  for(int j = 6; j <= nv; ++j) b.push_back(vs[3 * nv + j % nv]);
+  const std::vector<double> chain = table_chain(m, s, {a, b});
+  const std::vector<char> endpoint = SI::interior_endpoints(t, chain);
+  std::vector<double> w;
+  SI::cotan_weights(t, w);
+  SI::Jump_laplace_system<LA> L;
+  L.jump_laplacian(t, w, endpoint);
+  const std::vector<double> u = L.solve_jump_laplace(SI::reduced_coordinates(t, SI::arc_jumps_from_chain(t, chain), endpoint));
+  const std::vector<double> omega = SI::darboux_derivative(t, u, endpoint);
+  const std::vector<double> star = SI::edge_hodge_star(t, w);
+  SI::Two_form_laplacian<LA> B;
+  B.assemble(t, star);
+  const std::vector<double> gamma = B.harmonic_part(omega);
+  double max_curl_omega = 0, max_curl_gamma = 0;
+  for(double c : SI::face_curl(t, omega)) max_curl_omega = std::max(max_curl_omega, std::abs(c));
+  for(double c : SI::face_curl(t, gamma)) max_curl_gamma = std::max(max_curl_gamma, std::abs(c));
+  EXPECT_GT(max_curl_omega, 1e-3);
+  EXPECT_LT(max_curl_gamma, 1e-12);
+  // the period of gamma along a longitude (a loop crossing the meridian once) is in (0, 1]
+  double period = 0;
+  const int j = 6;
+  for(int i = 0; i < nu; ++i)
+  {
+    const auto h = halfedge(vs[i * nv + j], vs[((i + 1) % nu) * nv + j], m);
+    ASSERT_TRUE(h.second);
+    const std::size_t e = s.edge_index(edge(h.first, m));
+    period += (t.ev[2 * e] == s.vertex_index(vs[i * nv + j]) ? 1. : -1.) * gamma[e];
+  }
+  EXPECT_GT(std::abs(period), 0.3);
+  EXPECT_LE(std::abs(period), 1. + 1e-9);
+}
+
+TEST(LinearProgramTraits, StatusAndDuplicates)
+{
+  SWN::GLPK_linear_program_traits lp;
+  lp.resize(2, 2);   // max x + y s.t. x + 2y <= 4, 3x + y <= 6, x, y >= 0 -> (1.6, 1.2)
+  lp.set_q(0, -1); lp.set_q(1, -1);
+  lp.set_variable_bounds(0, 0, lp.infinity()); lp.set_variable_bounds(1, 0, lp.infinity());
+  lp.set_A(0, 0, 1); lp.set_A(0, 1, 2); lp.set_u(0, 4);
+  lp.set_A(1, 0, 3); lp.set_A(1, 1, 0.5); lp.set_A(1, 1, 0.5); lp.set_u(1, 6);   // repeated entry summed
+  std::vector<double> x;
+  ASSERT_EQ(lp.solve(std::back_inserter(x)), SWN::LP_status::OPTIMAL);
+  ASSERT_EQ(x.size(), 2u);
+  EXPECT_NEAR(x[0], 1.6, 1e-9);
+  EXPECT_NEAR(x[1], 1.2, 1e-9);
+
+  lp.resize(1, 2);   // x >= 2 and x <= 1
+  lp.set_A(0, 0, 1); lp.set_l(0, 2); lp.set_A(1, 0, 1); lp.set_u(1, 1);
+  x.clear();
+  EXPECT_EQ(lp.solve(std::back_inserter(x)), SWN::LP_status::INFEASIBLE);
+  EXPECT_TRUE(x.empty());
+
+  lp.resize(1, 0);   // min -x, x >= 0
+  lp.set_q(0, -1); lp.set_variable_bounds(0, 0, lp.infinity());
+  EXPECT_EQ(lp.solve(std::back_inserter(x)), SWN::LP_status::UNBOUNDED);
+}
+
+namespace {
+// The authors' formulation of Eq. 11 (slack z >= |J| on every arc, 0 <= Gamma J <= Gamma^2), solved
+// with GLPK: an independent formulation whose optimum must equal ours.
+double reference_residual_objective(const SI::Mesh_tables& t, const std::vector<double>& s, const std::vector<double>& chain, double eps)
+{
+  double mean = 0;
+  for(const SI::Arc& a : t.arcs) mean += t.edge_length(a.edge);
+  mean /= double(t.arcs.size());
+  SWN::GLPK_linear_program_traits lp;
+  const std::size_t na = t.arcs.size();
+  lp.resize(t.nf + na, 4 * na);
+  std::size_t row = 0;
+  for(std::size_t a = 0; a < na; ++a)
+  {
+    const SI::Arc& arc = t.arcs[a];
+    const std::size_t L = arc.left_side / 3, R = arc.right_side / 3, z = t.nf + a;
+    const double G = chain[arc.edge];
+    lp.set_variable_bounds(z, 0, lp.infinity());
+    lp.set_q(z, (G != 0 ? eps : 1.) * t.edge_length(arc.edge) / mean);
+    lp.set_A(row, L, 1); lp.set_A(row, R, -1); lp.set_A(row, z, -1); lp.set_u(row++, -s[a]);   // J <= z
+    lp.set_A(row, L, 1); lp.set_A(row, R, -1); lp.set_A(row, z, 1); lp.set_l(row++, -s[a]);    // -z <= J
+    lp.set_A(row, L, G); lp.set_A(row, R, -G); lp.set_l(row, -G * s[a]); lp.set_u(row++, G * G - G * s[a]);
+    ++row;   // the reference's trivial row
+  }
+  std::vector<double> x;
+  EXPECT_EQ(lp.solve(std::back_inserter(x)), SWN::LP_status::OPTIMAL);
+  double obj = 0;
+  for(std::size_t a = 0; a < na; ++a)
+  {
+    const SI::Arc& arc = t.arcs[a];
+    const double J = s[a] + x[arc.left_side / 3] - x[arc.right_side / 3];
+    obj += (chain[arc.edge] != 0 ? eps : 1.) * t.edge_length(arc.edge) / mean * std::abs(J);
+  }
+  return obj;
+}
+} // namespace
+
+TEST(ResidualFunction, OptimumSatisfiesConstraintsAndMatchesTheAuthorsFormulation)
+{
+  Mesh m;
+  const int nu = 20, nv = 10;
+  auto vs = torus_mesh(m, nu, nv);
+  SWN::Surface_winding_numbers_solver<Mesh> solver(m);
+  const SI::Mesh_tables& t = solver.tables();
+  std::vector<Vertex> a, b, loop;   // broken meridian + broken contractible loop
+  for(int j = 0; j <= 3; ++j) a.push_back(vs[2 * nv + j]);
+  for(int j = 5; j <= nv; ++j) b.push_back(vs[2 * nv + j % nv]);
+  for(int i = 8; i <= 12; ++i) loop.push_back(vs[i * nv + 2]);
+  for(int j = 3; j <= 5; ++j) loop.push_back(vs[12 * nv + j]);
+  for(int i = 11; i >= 9; --i) loop.push_back(vs[i * nv + 5]);
+  const std::vector<double> chain = table_chain(m, solver, {a, b, loop});
+  const std::vector<char> endpoint = SI::interior_endpoints(t, chain);
+  std::vector<double> w;
+  SI::cotan_weights(t, w);
+  SI::Jump_laplace_system<LA> L;
+  L.jump_laplacian(t, w, endpoint);
+  const std::vector<double> u = L.solve_jump_laplace(SI::reduced_coordinates(t, SI::arc_jumps_from_chain(t, chain), endpoint));
+  SI::Two_form_laplacian<LA> B;
+  const std::vector<double> star = SI::edge_hodge_star(t, w);
+  B.assemble(t, star);
+  const std::vector<double> v0 = SI::local_integration(t, B.harmonic_part(SI::darboux_derivative(t, u, endpoint)));
+  std::vector<double> s(t.arcs.size());
+  for(std::size_t k = 0; k < t.arcs.size(); ++k) s[k] = 0.5 * (SI::corner_jump_at(t, v0, k, 0) + SI::corner_jump_at(t, v0, k, 1));
+  SWN::GLPK_linear_program_traits lp;
+  double objective = 0;
+  std::size_t nvar = 0, nrow = 0;
+  const std::vector<double> sigma = SI::residual_function(t, s, chain, 0.01, lp, objective, nvar, nrow);
+  for(std::size_t k = 0; k < t.arcs.size(); ++k)
+  {
+    const SI::Arc& arc = t.arcs[k];
+    const double G = chain[arc.edge];
+    if(G == 0) continue;
+    const double J = s[k] + sigma[arc.left_side / 3] - sigma[arc.right_side / 3];
+    EXPECT_GE(J / G, -1e-7);
+    EXPECT_LE(J / G, 1 + 1e-7);
+  }
+  EXPECT_GT(objective, 0.);
+  EXPECT_NEAR(objective, reference_residual_objective(t, s, chain, 0.01), 1e-7 * (1 + objective));
+}
+
+TEST(Solver, ManyCurvesOnOneMeshMatchTheFreeFunction)
+{
+  Mesh m;
+  const int nu = 20, nv = 10;
+  auto vs = torus_mesh(m, nu, nv);
+  SWN::Surface_winding_numbers_solver<Mesh> solver(m);
+  ASSERT_TRUE(solver.is_valid());
+  for(int i0 = 0; i0 < 3; ++i0)
+  {
+    auto chain = m.add_property_map<Mesh::Edge_index, int>("e:chain", 0).first;
+    for(auto e : edges(m)) chain[e] = 0;
+    std::vector<Vertex> a, b;
+    for(int j = 0; j <= 3 + i0; ++j) a.push_back(vs[(2 + 5 * i0) * nv + j]);
+    for(int j = 5 + i0; j <= nv; ++j) b.push_back(vs[(2 + 5 * i0) * nv + j % nv]);
+    ASSERT_TRUE(SWN::add_vertex_polyline_to_chain(m, a, chain));
+    ASSERT_TRUE(SWN::add_vertex_polyline_to_chain(m, b, chain));
+    std::map<Mesh::Face_index, int> l1, l2;
+    std::map<Mesh::Edge_index, int> G1, G2;
+    auto L1 = boost::make_assoc_property_map(l1);
+    auto L2 = boost::make_assoc_property_map(l2);
+    ASSERT_TRUE(solver.solve(chain, L1, SWN::parameters::nonbounding_chain_map(boost::make_assoc_property_map(G1))));
+    ASSERT_TRUE(CGAL::surface_winding_numbers(m, chain, L2, SWN::parameters::nonbounding_chain_map(boost::make_assoc_property_map(G2))));
+    EXPECT_EQ(l1, l2);
+    EXPECT_EQ(G1, G2);
+    int nG = 0;
+    for(auto e : edges(m)) nG += G1[e] != 0;
+    EXPECT_EQ(nG, nv);   // the completed meridian
+    EXPECT_TRUE(solver.report().hodge_projection);
+    m.remove_property_map(chain);
+  }
+}
+
+TEST(Solver, SurfaceMeshWithGarbageAndScaleInvariance)
+{
+  Mesh m;
+  const int n = 14;
+  auto vs = grid_disk(m, n, 9);
+  auto chain = m.add_property_map<Mesh::Edge_index, int>("e:chain", 0).first;
+  ASSERT_TRUE(SWN::add_vertex_polyline_to_chain(m, square_loop(vs, n, 3, 3, 9, 10), chain));
+  // remove a corner face without collecting the garbage
+  Mesh::Face_index corner = face(halfedge(vs[0], vs[1], m).first, m);
+  CGAL::Euler::remove_face(halfedge(corner, m), m);
+  ASSERT_TRUE(m.has_garbage());
+  auto labels = m.add_property_map<Mesh::Face_index, int>("f:label", -7).first;
+  ASSERT_TRUE(CGAL::surface_winding_numbers(m, chain, labels));
+  std::map<int, int> hist;
+  for(auto f : faces(m)) ++hist[labels[f]];
+  ASSERT_EQ(hist.size(), 2u);
+  EXPECT_EQ(hist[1], 2 * 6 * 7);
+  for(double scale : {1e8, 1e-8})
+  {
+    Mesh m2 = m;
+    for(auto v : vertices(m2)) m2.point(v) = K::Point_3(scale * m2.point(v).x() + 3, scale * m2.point(v).y() - 1, 2);
+    auto chain2 = m2.property_map<Mesh::Edge_index, int>("e:chain").first;
+    auto labels2 = m2.add_property_map<Mesh::Face_index, int>("f:label2", -7).first;
+    ASSERT_TRUE(CGAL::surface_winding_numbers(m2, chain2, labels2));
+    for(auto f : faces(m2)) EXPECT_EQ(labels2[f], labels[f]);
+  }
+}
