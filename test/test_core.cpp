@@ -411,3 +411,33 @@ TEST(Solver, SurfaceMeshWithGarbageAndScaleInvariance)
     for(auto f : faces(m2)) EXPECT_EQ(labels2[f], labels[f]);
   }
 }
+
+#include <CGAL/boost/graph/Face_filtered_graph.h>
+
+TEST(Solver, FaceFilteredGraphSolvesOneComponent)
+{
+  // two grids side by side; the filtered graph keeps the second one only
+  Mesh m;
+  const int n = 10;
+  auto vs = grid_disk(m, n, 2);
+  Mesh other;
+  auto vs2 = grid_disk(other, n, 4);
+  std::vector<Vertex> loop2 = square_loop(vs2, n, 2, 2, 6, 7);
+  const std::size_t offset = num_vertices(m);
+  m.join(other);
+  std::vector<Vertex> loop;
+  for(Vertex v : loop2) loop.push_back(Vertex(std::size_t(v) + offset));
+  auto chain = m.add_property_map<Mesh::Edge_index, int>("e:chain", 0).first;
+  ASSERT_TRUE(SWN::add_vertex_polyline_to_chain(m, loop, chain));
+  std::vector<Mesh::Face_index> selected;
+  for(auto f : faces(m)) if(std::size_t(f) >= std::size_t(2 * n * n)) selected.push_back(f);
+  CGAL::Face_filtered_graph<Mesh> ffg(m, selected);
+  ASSERT_EQ(num_faces(ffg), std::size_t(2 * n * n));
+  auto labels = m.add_property_map<Mesh::Face_index, int>("f:label", -5).first;
+  ASSERT_TRUE(CGAL::surface_winding_numbers(ffg, chain, labels));
+  std::map<int, int> hist;
+  for(auto f : faces(m)) ++hist[labels[f]];
+  EXPECT_EQ(hist[-5], 2 * n * n);      // faces outside the filtered graph untouched
+  EXPECT_EQ(hist[1], 2 * 4 * 5);
+  EXPECT_EQ(hist[0], 2 * n * n - 2 * 4 * 5);
+}
