@@ -518,6 +518,11 @@ struct Built_mesh
   std::unordered_map<face_descriptor, Index> findex;    // descriptor -> soup triangle
   bool vertex_order_preserved = false;                  // soup order == vertices(tm) order
   bool face_order_preserved = false;                    // soup order == faces(tm) order
+  // Reference halfedge of each edge: halfedge(e, tm) for the descriptor e met while iterating
+  // over edges(tm). (CGAL 5.5's Surface_mesh::Edge_index stores a halfedge, so
+  // halfedge(edge(h, tm), tm) == h for both halfedges of an edge: only descriptors coming from
+  // edges(tm) give the reference direction.)
+  std::unordered_map<halfedge_descriptor, bool> is_reference;
 
   Built_mesh() = default;
   Built_mesh(const Built_mesh&) = delete;               // descriptors point into tm
@@ -527,10 +532,19 @@ struct Built_mesh
   // into a value along key.first -> key.second.
   std::pair<Edge_key, int> key(edge_descriptor e) const
   {
-    halfedge_descriptor h = halfedge(e, tm);
+    halfedge_descriptor h = reference_halfedge(e);
     const Index s = vindex.at(source(h, tm)), t = vindex.at(target(h, tm));
     return {edge_key(s, t), s < t ? 1 : -1};
   }
+
+  halfedge_descriptor reference_halfedge(edge_descriptor e) const
+  {
+    halfedge_descriptor h = halfedge(e, tm);
+    return is_reference.at(h) ? h : opposite(h, tm);
+  }
+
+  // +1 if h is the reference halfedge of its edge, -1 otherwise
+  int sign(halfedge_descriptor h) const { return is_reference.at(h) ? 1 : -1; }
 
   halfedge_descriptor halfedge_of(Index a, Index b) const
   {
@@ -582,6 +596,13 @@ void build(const Soup& soup, Built_mesh<TM>& out)
   }
   out.vindex.clear();
   for(Index i = 0; i < out.vertex.size(); ++i) out.vindex[out.vertex[i]] = i;
+
+  out.is_reference.clear();
+  for(auto e : edges(out.tm))
+  {
+    out.is_reference[halfedge(e, out.tm)] = true;
+    out.is_reference[opposite(halfedge(e, out.tm), out.tm)] = false;
+  }
 
   // faces: match on the cyclic vertex sequence (this also checks the orientation).
   std::map<std::array<Index, 3>, Index> by_cycle;

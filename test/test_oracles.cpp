@@ -1,0 +1,1613 @@
+// End-to-end analytic oracle tests for CGAL::surface_winding_numbers (algorithm notes, section 10).
+//
+// Every oracle runs on CGAL::Surface_mesh and on CGAL::Polyhedron_3 (typed tests), mostly on
+// jittered meshes with random diagonals. Results are converted to "soup terms" (labels per
+// soup triangle, chains keyed by soup vertex pairs) so that expectations are written once,
+// independently of the data structure and of its edge orientation.
+//
+// Conventions (section 1 of the notes): a chain value counts traversals along a -> b; W increases
+// by chain(e) when crossing e from its right to its left (the inside of a CCW loop is one higher);
+// per connected component, the label covering the largest area is 0.
+
+#include <CGAL/surface_winding_numbers.h>
+
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <boost/property_map/property_map.hpp>
+
+#include <gtest/gtest.h>
+
+#include "mesh_generators.h"
+
+#include <algorithm>
+#include <array>
+#include <climits>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace SWN = CGAL::Surface_winding_numbers;
+using namespace swn_test;
+
+using SM = CGAL::Surface_mesh<Point_3>;
+using PH = CGAL::Polyhedron_3<Kernel>;
+
+namespace {
+
+constexpr int kIntSentinel = -987654;
+constexpr double kRealSentinel = -9.87654e300;
+
+// Mesh sizes (notes 10.1): disk 20x20 (800 faces), torus 24x12 (576), annulus 8x48 (768),
+// UV sphere 12 bands x 24 (528).
+constexpr int kDiskN = 20;
+constexpr int kNu = 24, kNv = 12;
+constexpr int kNr = 8, kNt = 48;
+constexpr int kLat = 12, kLon = 24;
+
+// Tolerances: w two-valued / constant for one-solve surfaces (disk, sphere) and, loosely, on
+// the LP path (notes 10.4).
+constexpr double kTolW = 1e-6;
+constexpr double kTolWLP = 1e-4;
+constexpr double kTolG = 1e-3;
+
+// ------------------------------------------------------------------------------------------
+// Raw maps over std::unordered_map, usable with any FaceListGraph
+// ------------------------------------------------------------------------------------------
+
+template <class TM>
+struct Raw_maps
+{
+  using GT = boost::graph_traits<TM>;
+  using vertex_descriptor = typename GT::vertex_descriptor;
+  using halfedge_descriptor = typename GT::halfedge_descriptor;
+  using edge_descriptor = typename GT::edge_descriptor;
+  using face_descriptor = typename GT::face_descriptor;
+
+  std::unordered_map<edge_descriptor, int> chain, G, B;
+  std::unordered_map<edge_descriptor, double> g;
+  std::unordered_map<face_descriptor, int> W;
+  std::unordered_map<halfedge_descriptor, double> w;
+  SWN::Solve_report rep;
+
+  explicit Raw_maps(const TM& tm)
+  {
+    for(edge_descriptor e : edges(tm)) { chain[e] = 0; G[e] = kIntSentinel; B[e] = kIntSentinel; g[e] = kRealSentinel; }
+    for(face_descriptor f : faces(tm)) W[f] = kIntSentinel;
+    for(halfedge_descriptor h : halfedges(tm)) w[h] = kRealSentinel;
+    rep.error = "<report not written>";
+  }
+
+  auto np(double eps)
+  {
+    return SWN::parameters::nonbounding_chain_map(boost::make_assoc_property_map(G),
+           SWN::parameters::nonbounding_chain_real_map(boost::make_assoc_property_map(g),
+           SWN::parameters::bounding_chain_map(boost::make_assoc_property_map(B),
+           SWN::parameters::winding_number_map(boost::make_assoc_property_map(w),
+           SWN::parameters::epsilon(eps,
+           SWN::parameters::report(std::ref(rep)))))));
+  }
+
+  bool call(const TM& tm, double eps = 0.01)
+  {
+    return CGAL::surface_winding_numbers(tm, boost::make_assoc_property_map(chain), boost::make_assoc_property_map(W),
+                                         np(eps));
+  }
+
+  template <class Solver>
+  bool call_solver(Solver& solver, double eps = 0.01)
+  {
+    const bool ok = solver.solve(boost::make_assoc_property_map(chain), boost::make_assoc_property_map(W), np(eps));
+    rep = solver.report();
+    return ok;
+  }
+
+  bool outputs_untouched() const
+  {
+    for(const auto& kv : W) if(kv.second != kIntSentinel) return false;
+    for(const auto& kv : G) if(kv.second != kIntSentinel) return false;
+    for(const auto& kv : B) if(kv.second != kIntSentinel) return false;
+    for(const auto& kv : g) if(kv.second != kRealSentinel) return false;
+    for(const auto& kv : w) if(!(kv.second == kRealSentinel)) return false;
+    return true;
+  }
+};
+
+// Writes a soup-level chain into a per-edge map of `m` (value along halfedge(e)).
+template <class TM, class Map>
+void set_chain(const Built_mesh<TM>& m, const Soup_chain& c, Map& chain)
+{
+  for(const auto& kv : c)
+  {
+    auto h = m.halfedge_of(kv.first.first, kv.first.second);   // along key.first -> key.second
+    chain[edge(h, m.tm)] += m.sign(h) * kv.second;
+  }
+}
+
+// ------------------------------------------------------------------------------------------
+// Outcome of one solve, in soup terms
+// ------------------------------------------------------------------------------------------
+
+struct Outcome
+{
+  bool ok = false;
+  SWN::Solve_report rep;
+  const Soup* soup = nullptr;
+  Soup_chain input;
+
+  std::vector<int> W;                          // per soup triangle
+  Soup_chain G, B;                             // along key.first -> key.second
+  std::map<Edge_key, double> g;                // along key.first -> key.second (all edges)
+  std::vector<std::array<double, 3>> w;        // per soup triangle, per triangle corner
+
+  std::set<Edge_key> all_edges, border_edges;
+  std::set<Index> border_vertices;
+  std::map<Edge_key, std::pair<Index, Index>> sides;   // interior edges: (left, right) face of key.first -> key.second
+
+  std::size_t unwritten_W = 0, unwritten_G = 0, unwritten_B = 0, unwritten_g = 0, unwritten_w = 0;
+};
+
+template <class TM, class Solver = void>
+Outcome run_impl(const Built_mesh<TM>& m, const Soup_chain& c, double eps, Solver* solver)
+{
+  Raw_maps<TM> r(m.tm);
+  set_chain(m, c, r.chain);
+  Outcome o;
+  o.soup = &m.soup;
+  o.input = c;
+  if constexpr(std::is_void<Solver>::value) o.ok = r.call(m.tm, eps);
+  else o.ok = r.call_solver(*solver, eps);
+  o.rep = r.rep;
+
+  const TM& tm = m.tm;
+  o.W.assign(m.soup.num_faces(), kIntSentinel);
+  for(Index f = 0; f < m.soup.num_faces(); ++f)
+  {
+    o.W[f] = r.W.at(m.face[f]);
+    if(o.W[f] == kIntSentinel) ++o.unwritten_W;
+  }
+  for(auto e : edges(tm))
+  {
+    const auto ks = m.key(e);
+    o.all_edges.insert(ks.first);
+    const int Gv = r.G.at(e), Bv = r.B.at(e);
+    const double gv = r.g.at(e);
+    if(Gv == kIntSentinel) ++o.unwritten_G; else if(Gv != 0) o.G[ks.first] = Gv * ks.second;
+    if(Bv == kIntSentinel) ++o.unwritten_B; else if(Bv != 0) o.B[ks.first] = Bv * ks.second;
+    if(gv == kRealSentinel) ++o.unwritten_g;
+    o.g[ks.first] = gv * ks.second;
+    if(CGAL::is_border(e, tm))
+    {
+      o.border_edges.insert(ks.first);
+      o.border_vertices.insert(ks.first.first);
+      o.border_vertices.insert(ks.first.second);
+    }
+    else
+    {
+      auto h = m.halfedge_of(ks.first.first, ks.first.second);
+      o.sides[ks.first] = {m.findex.at(face(h, tm)), m.findex.at(face(opposite(h, tm), tm))};
+    }
+  }
+  o.w.assign(m.soup.num_faces(), {0, 0, 0});
+  for(Index f = 0; f < m.soup.num_faces(); ++f)
+  {
+    const Triangle& t = m.soup.triangles[f];
+    for(auto h : CGAL::halfedges_around_face(halfedge(m.face[f], tm), tm))
+    {
+      const Index v = m.vindex.at(target(h, tm));
+      const int k = int(std::find(t.begin(), t.end(), v) - t.begin());
+      const double val = r.w.at(h);
+      if(val == kRealSentinel) ++o.unwritten_w;
+      o.w[f][k] = val;
+    }
+  }
+  return o;
+}
+
+template <class TM>
+Outcome run(const Built_mesh<TM>& m, const Soup_chain& c, double eps = 0.01)
+{
+  return run_impl<TM, void>(m, c, eps, nullptr);
+}
+
+template <class TM, class Solver>
+Outcome run_with_solver(const Built_mesh<TM>& m, Solver& solver, const Soup_chain& c, double eps = 0.01)
+{
+  return run_impl<TM, Solver>(m, c, eps, &solver);
+}
+
+template <class TM>
+std::unique_ptr<Built_mesh<TM>> make_mesh(const Soup& s)
+{
+  auto m = std::make_unique<Built_mesh<TM>>();
+  build(s, *m);
+  return m;
+}
+
+// ------------------------------------------------------------------------------------------
+// Checks shared by every successful solve
+// ------------------------------------------------------------------------------------------
+
+inline int R(double x) { return int(std::round(x)); }   // half away from zero, as the notes' R
+
+std::string histogram(const std::vector<int>& W, const std::vector<Index>& faces)
+{
+  std::map<int, std::size_t> h;
+  for(Index f : faces) ++h[W[f]];
+  std::ostringstream os;
+  for(const auto& kv : h) os << " [" << kv.first << "]x" << kv.second;
+  return os.str();
+}
+
+std::vector<Index> all_faces(const Soup& s)
+{
+  std::vector<Index> f(s.num_faces());
+  for(Index i = 0; i < f.size(); ++i) f[i] = i;
+  return f;
+}
+
+// Interior endpoints of the input: vertices off the border where the boundary 0-chain is nonzero.
+std::set<Index> interior_endpoints(const Outcome& o)
+{
+  std::set<Index> e;
+  for(const auto& kv : boundary(o.input))
+    if(!o.border_vertices.count(kv.first)) e.insert(kv.first);
+  return e;
+}
+
+void check_common(const Outcome& o)
+{
+  ASSERT_TRUE(o.ok) << "surface_winding_numbers returned false: " << o.rep.error;
+  EXPECT_TRUE(o.rep.success);
+  EXPECT_TRUE(o.rep.error.empty()) << o.rep.error;
+  EXPECT_EQ(o.unwritten_W, 0u) << "faces without label";
+  EXPECT_EQ(o.unwritten_G, 0u) << "edges without G";
+  EXPECT_EQ(o.unwritten_B, 0u) << "edges without B";
+  EXPECT_EQ(o.unwritten_g, 0u) << "edges without g";
+  EXPECT_EQ(o.unwritten_w, 0u) << "corners without w";
+  const Soup& s = *o.soup;
+
+  // G is the rounding of g, g is finite, and neither lives on border edges.
+  std::size_t bad_round = 0, nonfinite = 0;
+  std::string first_bad;
+  for(const auto& kv : o.g)
+  {
+    if(!std::isfinite(kv.second)) { ++nonfinite; continue; }
+    auto it = o.G.find(kv.first);
+    const int Gv = it == o.G.end() ? 0 : it->second;
+    if(Gv != R(kv.second))
+    {
+      if(bad_round++ == 0)
+        first_bad = "edge (" + std::to_string(kv.first.first) + "," + std::to_string(kv.first.second) + ") G=" +
+                    std::to_string(Gv) + " g=" + std::to_string(kv.second);
+    }
+  }
+  EXPECT_EQ(nonfinite, 0u) << "non-finite g";
+  EXPECT_EQ(bad_round, 0u) << "G != R(g) on " << bad_round << " edges, first: " << first_bad;
+  for(const Edge_key& k : o.border_edges)
+    EXPECT_EQ(o.G.count(k), 0u) << "G on border edge (" << k.first << "," << k.second << ")";
+
+  // B is the jump of W (left minus right), zero on border edges.
+  std::size_t bad_B = 0;
+  std::string first_B;
+  for(const auto& kv : o.sides)
+  {
+    const int jump = o.W[kv.second.first] - o.W[kv.second.second];
+    auto it = o.B.find(kv.first);
+    const int Bv = it == o.B.end() ? 0 : it->second;
+    if(Bv != jump && bad_B++ == 0)
+      first_B = "edge (" + std::to_string(kv.first.first) + "," + std::to_string(kv.first.second) + ") B=" +
+                std::to_string(Bv) + " JW=" + std::to_string(jump);
+  }
+  EXPECT_EQ(bad_B, 0u) << "B != JW on " << bad_B << " edges, first: " << first_B;
+  for(const Edge_key& k : o.border_edges)
+    EXPECT_EQ(o.B.count(k), 0u) << "B on border edge (" << k.first << "," << k.second << ")";
+
+  // B is closed: zero boundary at every interior vertex.
+  for(const auto& kv : boundary(o.B))
+    EXPECT_TRUE(o.border_vertices.count(kv.first)) << "B has boundary " << kv.second << " at interior vertex " << kv.first;
+
+  // w: NaN exactly at the corners of interior endpoints, finite elsewhere.
+  const std::set<Index> ends = interior_endpoints(o);
+  std::size_t bad_nan = 0;
+  for(Index f = 0; f < s.num_faces(); ++f)
+    for(int k = 0; k < 3; ++k)
+    {
+      const bool is_end = ends.count(s.triangles[f][k]) > 0;
+      const double val = o.w[f][k];
+      if(is_end != std::isnan(val) || (!is_end && !std::isfinite(val))) ++bad_nan;
+    }
+  EXPECT_EQ(bad_nan, 0u) << "corners where (w is NaN) != (vertex is an interior endpoint); endpoints: " << ends.size();
+  EXPECT_EQ(o.rep.interior_endpoints, ends.size());
+
+  // Normalization: per connected component, the label covering the largest area is 0 (checked
+  // only when that label's area beats the runner-up by 2%).
+  std::map<int, std::map<int, double>> area;   // component -> label -> area
+  for(Index f = 0; f < s.num_faces(); ++f) area[s.fcomponent[f]][o.W[f]] += triangle_area(s, f);
+  for(const auto& ca : area)
+  {
+    std::vector<std::pair<double, int>> v;
+    for(const auto& la : ca.second) v.push_back({la.second, la.first});
+    std::sort(v.rbegin(), v.rend());
+    if(v.size() == 1 || v[0].first > 1.02 * v[1].first)
+      EXPECT_EQ(v[0].second, 0) << "component " << ca.first << ": largest-area label is " << v[0].second;
+  }
+}
+
+// For closed curves (no interior endpoints): B = chain - G on curve edges and 0 elsewhere, and G
+// lives on curve edges only.
+void check_closed_decomposition(const Outcome& o)
+{
+  ASSERT_TRUE(interior_endpoints(o).empty()) << "test bug: curve is not closed";
+  for(const auto& kv : o.G)
+    EXPECT_TRUE(o.input.count(kv.first)) << "G off the curve at (" << kv.first.first << "," << kv.first.second << ")";
+  const Soup_chain expected_B = difference(o.input, o.G);
+  Soup_chain B_on_curve, B_off_curve;
+  for(const auto& kv : o.B) (o.input.count(kv.first) ? B_on_curve : B_off_curve)[kv.first] = kv.second;
+  EXPECT_TRUE(B_off_curve.empty()) << "B off the curve: " << to_string(B_off_curve);
+  EXPECT_TRUE(B_on_curve == expected_B) << "B on curve: " << to_string(B_on_curve) << "\nchain - G: " << to_string(expected_B);
+}
+
+// The single label of a region of faces.
+::testing::AssertionResult region_label(const Outcome& o, const std::vector<Index>& faces, int& label)
+{
+  if(faces.empty()) return ::testing::AssertionFailure() << "empty region (test bug)";
+  std::set<int> l;
+  for(Index f : faces) l.insert(o.W[f]);
+  if(l.size() != 1) return ::testing::AssertionFailure() << "region of " << faces.size() << " faces has several labels:" << histogram(o.W, faces);
+  label = *l.begin();
+  return ::testing::AssertionSuccess();
+}
+
+// W(A) - W(B) == diff, each region single-labelled; optionally absolute labels.
+void expect_regions(const Outcome& o, const std::vector<Index>& A, const std::vector<Index>& B, int diff,
+                    std::optional<int> abs_A = std::nullopt, std::optional<int> abs_B = std::nullopt)
+{
+  int a = 0, b = 0;
+  ASSERT_TRUE(region_label(o, A, a)) << "(region A)";
+  ASSERT_TRUE(region_label(o, B, b)) << "(region B)";
+  EXPECT_EQ(a - b, diff) << "W(A)=" << a << " W(B)=" << b;
+  if(abs_A) EXPECT_EQ(a, *abs_A) << "absolute label of region A";
+  if(abs_B) EXPECT_EQ(b, *abs_B) << "absolute label of region B";
+}
+
+void expect_constant_W(const Outcome& o)
+{
+  int l = 0;
+  EXPECT_TRUE(region_label(o, all_faces(*o.soup), l));
+  EXPECT_EQ(l, 0) << "constant W must be 0 after normalization";
+}
+
+std::size_t count_labels(const Outcome& o)
+{
+  return std::set<int>(o.W.begin(), o.W.end()).size();
+}
+
+// w is constant on the corners of A, constant on the corners of B, and w(A) - w(B) = diff.
+void expect_w_two_valued(const Outcome& o, const std::vector<Index>& A, const std::vector<Index>& B, double diff,
+                         double tol)
+{
+  auto range = [&](const std::vector<Index>& F, double& lo, double& hi) {
+    lo = std::numeric_limits<double>::infinity(); hi = -lo;
+    for(Index f : F) for(double v : o.w[f]) if(!std::isnan(v)) { lo = std::min(lo, v); hi = std::max(hi, v); }
+  };
+  double la, ha, lb, hb;
+  range(A, la, ha);
+  range(B, lb, hb);
+  EXPECT_LT(ha - la, tol) << "w not constant on region A: [" << la << ", " << ha << "]";
+  EXPECT_LT(hb - lb, tol) << "w not constant on region B: [" << lb << ", " << hb << "]";
+  EXPECT_NEAR(0.5 * (la + ha) - 0.5 * (lb + hb), diff, tol) << "w(A) - w(B)";
+}
+
+void expect_w_constant(const Outcome& o, double tol)
+{
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for(const auto& c : o.w) for(double v : c) if(!std::isnan(v)) { lo = std::min(lo, v); hi = std::max(hi, v); }
+  EXPECT_LT(hi - lo, tol) << "w not constant: [" << lo << ", " << hi << "]";
+}
+
+void expect_G(const Outcome& o, const Soup_chain& expected)
+{
+  EXPECT_TRUE(o.G == expected) << "G        = " << to_string(o.G) << "\nexpected = " << to_string(expected);
+}
+
+// g on the support of `loop` lies in [lo, hi] (relative to the loop's orientation and multiplicity).
+void expect_g_on(const Outcome& o, const Soup_chain& loop, double lo, double hi)
+{
+  for(const auto& kv : loop)
+  {
+    const double ratio = o.g.at(kv.first) / kv.second;
+    EXPECT_GE(ratio, lo) << "g/chain on (" << kv.first.first << "," << kv.first.second << ")";
+    EXPECT_LE(ratio, hi) << "g/chain on (" << kv.first.first << "," << kv.first.second << ")";
+  }
+}
+
+double max_abs_g(const Outcome& o)
+{
+  double m = 0;
+  for(const auto& kv : o.g) m = std::max(m, std::abs(kv.second));
+  return m;
+}
+
+// ------------------------------------------------------------------------------------------
+// Face selections (parameter space, grid units)
+// ------------------------------------------------------------------------------------------
+
+std::vector<Index> select(const Soup& s, const std::function<bool(double, double, int)>& pred)
+{
+  std::vector<Index> r;
+  for(Index f = 0; f < s.num_faces(); ++f)
+    if(pred(s.fparam[f][0], s.fparam[f][1], s.fcomponent[f])) r.push_back(f);
+  return r;
+}
+
+inline double pdist(double a, double b, double period)
+{
+  double d = std::abs(a - b);
+  if(period > 0) d = std::min(d, period - d);
+  return d;
+}
+
+// Faces whose centre is farther than r (Chebyshev distance, grid units) from every point of `centres`.
+std::function<bool(double, double)> far_from(std::vector<Param> centres, double r, double px = 0, double py = 0)
+{
+  return [=](double x, double y) {
+    for(const Param& c : centres)
+      if(pdist(x, c[0], px) <= r && pdist(y, c[1], py) <= r) return false;
+    return true;
+  };
+}
+
+// Rectangle [x0,x1] x [y0,y1] in grid units, for cell centres.
+inline bool in_rect(double x, double y, double x0, double y0, double x1, double y1)
+{
+  return x > x0 && x < x1 && y > y0 && y < y1;
+}
+
+struct Mesh_names
+{
+  template <class T>
+  static std::string GetName(int)
+  {
+    if(std::is_same<T, SM>::value) return "Surface_mesh";
+    if(std::is_same<T, PH>::value) return "Polyhedron_3";
+    return "unknown";
+  }
+};
+
+} // namespace
+
+// ==========================================================================================
+// Typed fixture
+// ==========================================================================================
+
+template <class TM>
+class Oracles : public ::testing::Test
+{
+};
+using Mesh_types = ::testing::Types<SM, PH>;
+TYPED_TEST_SUITE(Oracles, Mesh_types, Mesh_names);
+
+// ------------------------------------------------------------------------------------------
+// Generators sanity (the oracles are only as good as the meshes)
+// ------------------------------------------------------------------------------------------
+
+TYPED_TEST(Oracles, GeneratorsProduceValidOrientedMeshes)
+{
+  const Soup disk = make_disk(kDiskN, 3), ann = make_annulus(kNr, kNt, 3), tor = make_torus(kNu, kNv, 3),
+             sph = make_uv_sphere(kLat, kLon, 3);
+  EXPECT_GT(min_signed_xy_area(disk), 0.);
+  EXPECT_GT(min_signed_xy_area(ann), 0.);
+  EXPECT_GT(min_outward_ratio_sphere(sph), 0.5);
+  struct Case { const Soup* s; long chi; bool closed; std::size_t F; };
+  for(const Case& c : {Case{&disk, 1, false, 800}, Case{&ann, 0, false, 768}, Case{&tor, 0, true, 576},
+                       Case{&sph, 2, true, 528}})
+  {
+    auto m = make_mesh<TypeParam>(*c.s);
+    EXPECT_TRUE(m->vertex_order_preserved);
+    EXPECT_TRUE(m->face_order_preserved);
+    EXPECT_TRUE(CGAL::is_valid_polygon_mesh(m->tm));
+    EXPECT_TRUE(CGAL::is_triangle_mesh(m->tm));
+    EXPECT_EQ(CGAL::is_closed(m->tm), c.closed);
+    EXPECT_EQ(num_faces(m->tm), c.F);
+    EXPECT_EQ(long(num_vertices(m->tm)) - long(num_edges(m->tm)) + long(num_faces(m->tm)), c.chi);
+    for(Index v = 0; v < c.s->num_vertices(); ++v)
+      EXPECT_EQ(get(CGAL::vertex_point, m->tm, m->vertex[v]), c.s->points[v]);
+  }
+}
+
+// ==========================================================================================
+// Disk (simply connected: one solve, no LP)
+// ==========================================================================================
+
+namespace {
+// Loop used by D1, D2, D4, D5: the 10x10-cell square (4,4)-(14,14), 25% of the disk.
+std::vector<Index> d_loop() { return disk_rect_loop(kDiskN, 4, 4, 14, 14); }
+std::vector<Index> d_inside(const Soup& s)
+{
+  return select(s, [](double x, double y, int) { return in_rect(x, y, 4, 4, 14, 14); });
+}
+std::vector<Index> d_outside(const Soup& s)
+{
+  return select(s, [](double x, double y, int) { return !in_rect(x, y, 4, 4, 14, 14); });
+}
+} // namespace
+
+TYPED_TEST(Oracles, D1_ClosedCCWLoopOnDisk)
+{
+  auto m = make_mesh<TypeParam>(make_disk(kDiskN, 11));
+  Soup_chain c;
+  add_loop(c, d_loop());
+  Outcome o = run(*m, c);
+  check_common(o);
+  check_closed_decomposition(o);
+  expect_regions(o, d_inside(m->soup), d_outside(m->soup), +1, 1, 0);
+  EXPECT_EQ(count_labels(o), 2u);
+  expect_G(o, {});
+  EXPECT_TRUE(o.B == c) << to_string(o.B);
+  expect_w_two_valued(o, d_inside(m->soup), d_outside(m->soup), 1.0, kTolW);
+  EXPECT_LT(max_abs_g(o), 1e-12);
+  EXPECT_FALSE(o.rep.lp_ran);
+  EXPECT_EQ(o.rep.interior_endpoints, 0u);
+}
+
+TYPED_TEST(Oracles, D1_RegularMeshNoJitter)
+{
+  auto m = make_mesh<TypeParam>(make_disk(kDiskN, 11, 0.0, false));
+  Soup_chain c;
+  add_loop(c, d_loop());
+  Outcome o = run(*m, c);
+  check_common(o);
+  check_closed_decomposition(o);
+  expect_regions(o, d_inside(m->soup), d_outside(m->soup), +1, 1, 0);
+  expect_w_two_valued(o, d_inside(m->soup), d_outside(m->soup), 1.0, kTolW);
+}
+
+TYPED_TEST(Oracles, D2_ReversedLoopOnDisk)
+{
+  auto m = make_mesh<TypeParam>(make_disk(kDiskN, 12));
+  Soup_chain c;
+  add_loop(c, reversed(d_loop()));
+  Outcome o = run(*m, c);
+  check_common(o);
+  check_closed_decomposition(o);
+  expect_regions(o, d_inside(m->soup), d_outside(m->soup), -1, -1, 0);
+  EXPECT_EQ(count_labels(o), 2u);
+  expect_G(o, {});
+  expect_w_two_valued(o, d_inside(m->soup), d_outside(m->soup), -1.0, kTolW);
+  EXPECT_FALSE(o.rep.lp_ran);
+}
+
+TYPED_TEST(Oracles, D3_LoopEnclosingMostOfTheDisk)
+{
+  auto m = make_mesh<TypeParam>(make_disk(kDiskN, 13));
+  Soup_chain c;
+  add_loop(c, disk_rect_loop(kDiskN, 2, 2, 18, 18));   // 256 of 400 cells
+  Outcome o = run(*m, c);
+  check_common(o);
+  check_closed_decomposition(o);
+  auto in = select(m->soup, [](double x, double y, int) { return in_rect(x, y, 2, 2, 18, 18); });
+  auto out = select(m->soup, [](double x, double y, int) { return !in_rect(x, y, 2, 2, 18, 18); });
+  // normalization: the inside covers the largest area, so it is 0 and the outside is -1
+  expect_regions(o, in, out, +1, 0, -1);
+  EXPECT_EQ(count_labels(o), 2u);
+  expect_G(o, {});
+  expect_w_two_valued(o, in, out, 1.0, kTolW);
+  EXPECT_FALSE(o.rep.lp_ran);
+}
+
+namespace {
+template <class TM>
+void disk_gap_case(std::size_t gap, unsigned seed)
+{
+  auto m = make_mesh<TM>(make_disk(kDiskN, seed));
+  // remove `gap` edges of the bottom side starting at (8,4)
+  const std::vector<Index> path = loop_with_gap(d_loop(), 4, gap);
+  Soup_chain c;
+  add_path(c, path);
+  ASSERT_EQ(boundary(c).size(), 2u);
+  Outcome o = run(*m, c);
+  check_common(o);
+  const double gx = 8 + 0.5 * gap, gy = 4;   // gap midpoint
+  auto away = far_from({{gx, gy}}, 0.5 * gap + 2.0);
+  auto in = select(m->soup, [&](double x, double y, int) { return in_rect(x, y, 4, 4, 14, 14) && away(x, y); });
+  auto out = select(m->soup, [&](double x, double y, int) { return !in_rect(x, y, 4, 4, 14, 14) && away(x, y); });
+  expect_regions(o, in, out, +1, 1, 0);
+  EXPECT_EQ(count_labels(o), 2u) << histogram(o.W, all_faces(m->soup));
+  expect_G(o, {});
+  EXPECT_LT(max_abs_g(o), 1e-12);
+  EXPECT_EQ(o.rep.interior_endpoints, 2u);
+  EXPECT_FALSE(o.rep.lp_ran);
+}
+} // namespace
+
+TYPED_TEST(Oracles, D4_LoopWithOneEdgeGap) { disk_gap_case<TypeParam>(1, 14); }
+TYPED_TEST(Oracles, D5_LoopWithThreeEdgeGap) { disk_gap_case<TypeParam>(3, 15); }
+
+TYPED_TEST(Oracles, D6_ChordBoundaryToBoundary)
+{
+  auto m = make_mesh<TypeParam>(make_disk(kDiskN, 16));
+  Soup_chain c;
+  add_path(c, disk_vertical_path(kDiskN, 10, 0, kDiskN));   // going up at x = 1/2
+  Outcome o = run(*m, c);
+  check_common(o);
+  check_closed_decomposition(o);   // ends on the border: counts as closed
+  auto left = select(m->soup, [](double x, double, int) { return x < 10; });
+  auto right = select(m->soup, [](double x, double, int) { return x > 10; });
+  expect_regions(o, left, right, +1);
+  EXPECT_EQ(count_labels(o), 2u);
+  expect_G(o, {});
+  EXPECT_TRUE(o.B == c) << to_string(o.B);
+  expect_w_two_valued(o, left, right, 1.0, kTolW);
+  EXPECT_EQ(o.rep.interior_endpoints, 0u);
+  EXPECT_FALSE(o.rep.lp_ran);
+}
+
+TYPED_TEST(Oracles, D6_ChordDownwardsAndOffCentre)
+{
+  auto m = make_mesh<TypeParam>(make_disk(kDiskN, 17));
+  Soup_chain c;
+  add_path(c, disk_vertical_path(kDiskN, 6, kDiskN, 0));   // going down at x = 0.3: left is x > 0.3
+  Outcome o = run(*m, c);
+  check_common(o);
+  check_closed_decomposition(o);
+  auto left = select(m->soup, [](double x, double, int) { return x > 6; });
+  auto right = select(m->soup, [](double x, double, int) { return x < 6; });
+  expect_regions(o, left, right, +1, 0, -1);   // left covers 70% of the area
+}
+
+TYPED_TEST(Oracles, D7_ChordWithTwoEdgeGap)
+{
+  auto m = make_mesh<TypeParam>(make_disk(kDiskN, 18));
+  auto parts = path_with_gap(disk_vertical_path(kDiskN, 10, 0, kDiskN), 9, 2);   // gap (10,9)-(10,11)
+  Soup_chain c;
+  add_path(c, parts.first);
+  add_path(c, parts.second);
+  Outcome o = run(*m, c);
+  check_common(o);
+  auto away = far_from({{10, 10}}, 3.0);
+  auto left = select(m->soup, [&](double x, double y, int) { return x < 10 && away(x, y); });
+  auto right = select(m->soup, [&](double x, double y, int) { return x > 10 && away(x, y); });
+  expect_regions(o, left, right, +1);
+  EXPECT_EQ(count_labels(o), 2u);
+  expect_G(o, {});
+  EXPECT_EQ(o.rep.interior_endpoints, 2u);
+  EXPECT_FALSE(o.rep.lp_ran);
+}
+
+// ==========================================================================================
+// Torus (genus 1: LP path)
+// ==========================================================================================
+
+namespace {
+Soup_chain meridian(int i, int mult = 1)
+{
+  Soup_chain c;
+  add_loop(c, torus_meridian(kNu, kNv, i), mult);
+  return c;
+}
+Soup_chain meridian_down(int i)
+{
+  Soup_chain c;
+  add_loop(c, reversed(torus_meridian(kNu, kNv, i)));
+  return c;
+}
+Soup_chain longitude(int j)
+{
+  Soup_chain c;
+  add_loop(c, torus_longitude(kNu, kNv, j));
+  return c;
+}
+// Meridian at u-index i (upwards, or downwards) with the `gap` edges (i,j)-(i,j+1)-...-(i,j+gap) removed.
+Soup_chain broken_meridian(int i, int j, std::size_t gap, bool down = false)
+{
+  Soup_chain c = down ? meridian_down(i) : meridian(i);
+  for(std::size_t k = 0; k < gap; ++k)
+    c.erase(edge_key(torus_vid(kNu, kNv, i, j + int(k)), torus_vid(kNu, kNv, i, j + int(k) + 1)));
+  return c;
+}
+// Contractible square on the torus, CCW w.r.t. the outward normal.
+Soup_chain torus_square(int i0, int j0, int i1, int j1)
+{
+  Soup_chain c;
+  add_loop(c, torus_rect_loop(kNu, kNv, i0, j0, i1, j1));
+  return c;
+}
+template <class TM>
+std::unique_ptr<Built_mesh<TM>> torus(unsigned seed)
+{
+  return make_mesh<TM>(make_torus(kNu, kNv, seed));
+}
+} // namespace
+
+TYPED_TEST(Oracles, T1_Meridian)
+{
+  auto m = torus<TypeParam>(21);
+  const Soup_chain c = meridian(6);
+  Outcome o = run(*m, c);
+  check_common(o);
+  check_closed_decomposition(o);
+  expect_constant_W(o);
+  expect_G(o, c);
+  expect_g_on(o, c, 1 - kTolG, 1 + kTolG);
+  expect_w_constant(o, kTolWLP);
+  EXPECT_TRUE(o.rep.lp_ran);
+  EXPECT_EQ(o.rep.interior_endpoints, 0u);
+}
+
+TYPED_TEST(Oracles, T1_MeridianRegularMesh)
+{
+  auto m = make_mesh<TypeParam>(make_torus(kNu, kNv, 22, 0.0, false));
+  const Soup_chain c = meridian(0);
+  Outcome o = run(*m, c);
+  check_common(o);
+  check_closed_decomposition(o);
+  expect_constant_W(o);
+  expect_G(o, c);
+  expect_w_constant(o, kTolWLP);
+}
+
+TYPED_TEST(Oracles, T2_MeridianAndLongitudeCrossing)
+{
+  auto m = torus<TypeParam>(23);
+  const Soup_chain c = sum(meridian(6), longitude(3));   // cross at vertex (6,3)
+  Outcome o = run(*m, c);
+  check_common(o);
+  check_closed_decomposition(o);
+  expect_constant_W(o);
+  expect_G(o, c);
+  expect_w_constant(o, kTolWLP);
+  EXPECT_TRUE(o.rep.lp_ran);
+}
+
+TYPED_TEST(Oracles, T3_TwoParallelMeridiansEqualSpacing)
+{
+  auto m = torus<TypeParam>(24);
+  const Soup_chain c = sum(meridian(0), meridian(12));
+  Outcome o = run(*m, c);
+  check_common(o);
+  check_closed_decomposition(o);
+  expect_constant_W(o);
+  expect_G(o, c);   // each loop x1, not one loop x2
+  expect_w_constant(o, kTolWLP);
+}
+
+TYPED_TEST(Oracles, T4_TwoParallelMeridiansUnequalSpacing)
+{
+  auto m = torus<TypeParam>(25);
+  const Soup_chain c = sum(meridian(2), meridian(7));
+  Outcome o = run(*m, c);
+  check_common(o);
+  check_closed_decomposition(o);
+  expect_constant_W(o);
+  expect_G(o, c);
+  expect_w_constant(o, kTolWLP);
+}
+
+namespace {
+// band between the meridians u = 3 and u = 10 (cells 3..9)
+std::vector<Index> t_band(const Soup& s, std::function<bool(double, double)> keep = nullptr)
+{
+  return select(s, [&](double x, double y, int) { return x > 3 && x < 10 && (!keep || keep(x, y)); });
+}
+std::vector<Index> t_rest(const Soup& s, std::function<bool(double, double)> keep = nullptr)
+{
+  return select(s, [&](double x, double y, int) { return !(x > 3 && x < 10) && (!keep || keep(x, y)); });
+}
+} // namespace
+
+TYPED_TEST(Oracles, T5_TwoOppositeMeridians)
+{
+  auto m = torus<TypeParam>(26);
+  const Soup_chain c = sum(meridian(3), meridian_down(10));
+  Outcome o = run(*m, c);
+  check_common(o);
+  check_closed_decomposition(o);
+  // the band is to the right of both curves
+  expect_regions(o, t_band(m->soup), t_rest(m->soup), -1, -1, 0);
+  EXPECT_EQ(count_labels(o), 2u);
+  expect_G(o, {});
+  expect_w_two_valued(o, t_band(m->soup), t_rest(m->soup), -1.0, kTolWLP);
+  EXPECT_TRUE(o.rep.lp_ran);
+}
+
+namespace {
+std::vector<Index> t6_inside(const Soup& s, std::function<bool(double, double)> keep = nullptr)
+{
+  return select(s, [&](double x, double y, int) { return in_rect(x, y, 4, 3, 10, 8) && (!keep || keep(x, y)); });
+}
+std::vector<Index> t6_outside(const Soup& s, std::function<bool(double, double)> keep = nullptr)
+{
+  return select(s, [&](double x, double y, int) { return !in_rect(x, y, 4, 3, 10, 8) && (!keep || keep(x, y)); });
+}
+} // namespace
+
+TYPED_TEST(Oracles, T6_ContractibleLoop)
+{
+  auto m = torus<TypeParam>(27);
+  const Soup_chain c = torus_square(4, 3, 10, 8);
+  Outcome o = run(*m, c);
+  check_common(o);
+  check_closed_decomposition(o);
+  expect_regions(o, t6_inside(m->soup), t6_outside(m->soup), +1, 1, 0);
+  EXPECT_EQ(count_labels(o), 2u);
+  expect_G(o, {});
+  EXPECT_TRUE(o.B == c);
+  expect_w_two_valued(o, t6_inside(m->soup), t6_outside(m->soup), 1.0, kTolWLP);
+  EXPECT_TRUE(o.rep.lp_ran);
+  EXPECT_NEAR(o.rep.lp_objective, 0.0, 1e-6);
+}
+
+TYPED_TEST(Oracles, T7_ContractibleLoopWithOneEdgeGap)
+{
+  auto m = torus<TypeParam>(28);
+  Soup_chain c;
+  add_path(c, loop_with_gap(torus_rect_loop(kNu, kNv, 4, 3, 10, 8), 2, 1));   // gap (6,3)-(7,3)
+  Outcome o = run(*m, c);
+  check_common(o);
+  auto away = far_from({{6.5, 3}}, 2.5, kNu, kNv);
+  expect_regions(o, t6_inside(m->soup, away), t6_outside(m->soup, away), +1, 1, 0);
+  expect_G(o, {});
+  EXPECT_LT(max_abs_g(o), kTolG) << "the Hodge step should remove everything";
+  EXPECT_EQ(o.rep.interior_endpoints, 2u);
+}
+
+TYPED_TEST(Oracles, T8_MeridianWithTwoEdgeGap)
+{
+  auto m = torus<TypeParam>(29);
+  const Soup_chain c = broken_meridian(6, 4, 2);   // gap (6,4)-(6,6)
+  Outcome o = run(*m, c);
+  check_common(o);
+  expect_constant_W(o);
+  expect_G(o, meridian(6));   // the completed loop
+  expect_g_on(o, meridian(6), 0.5, 1 + kTolG);   // ~0.91 in the notes' prototype
+  EXPECT_EQ(o.rep.interior_endpoints, 2u);
+  EXPECT_TRUE(o.rep.lp_ran);
+}
+
+TYPED_TEST(Oracles, T9_TwoOppositeMeridiansWithGaps)
+{
+  auto m = torus<TypeParam>(30);
+  const Soup_chain c = sum(broken_meridian(3, 2, 1), broken_meridian(10, 8, 1, true));
+  Outcome o = run(*m, c);
+  check_common(o);
+  auto away = far_from({{3, 2.5}, {10, 8.5}}, 2.5, kNu, kNv);
+  expect_regions(o, t_band(m->soup, away), t_rest(m->soup, away), -1, -1, 0);
+  expect_G(o, {});
+  EXPECT_EQ(o.rep.interior_endpoints, 4u);
+}
+
+TYPED_TEST(Oracles, T10_TwoSameMeridiansWithGaps)
+{
+  auto m = torus<TypeParam>(31);
+  const Soup_chain c = sum(broken_meridian(0, 3, 1), broken_meridian(12, 8, 1));
+  Outcome o = run(*m, c);
+  check_common(o);
+  expect_constant_W(o);
+  const Soup_chain completed = sum(meridian(0), meridian(12));
+  expect_G(o, completed);
+  expect_g_on(o, completed, 0.8, 1 + kTolG);   // 0.87 .. 1 in the notes' prototype
+  EXPECT_EQ(o.rep.interior_endpoints, 4u);
+}
+
+TYPED_TEST(Oracles, T11_MeridianWithMultiplicityTwo)
+{
+  auto m = torus<TypeParam>(32);
+  const Soup_chain c = meridian(6, 2);
+  Outcome o = run(*m, c);
+  check_common(o);
+  check_closed_decomposition(o);
+  expect_constant_W(o);
+  expect_G(o, c);
+  expect_g_on(o, c, 1 - kTolG, 1 + kTolG);
+  expect_w_constant(o, kTolWLP);
+}
+
+namespace {
+// T12: broken meridian at u = 0 (2-edge gap at v 4..6) + contractible square (8,3)-(14,8).
+Soup_chain t12_chain()
+{
+  return sum(broken_meridian(0, 4, 2), torus_square(8, 3, 14, 8));
+}
+// regions kept >= 3 cells away from the broken meridian
+std::vector<Index> t12_inside(const Soup& s)
+{
+  return select(s, [](double x, double y, int) { return in_rect(x, y, 8, 3, 14, 8); });
+}
+std::vector<Index> t12_outside(const Soup& s)
+{
+  return select(s, [](double x, double y, int) { return !in_rect(x, y, 8, 3, 14, 8) && x > 3 && x < kNu - 3; });
+}
+} // namespace
+
+TYPED_TEST(Oracles, T12_BrokenMeridianPlusContractibleLoop)
+{
+  auto m = torus<TypeParam>(33);
+  Outcome o = run(*m, t12_chain());
+  check_common(o);
+  expect_regions(o, t12_inside(m->soup), t12_outside(m->soup), +1, 1, 0);
+  expect_G(o, meridian(0));
+  EXPECT_EQ(o.rep.interior_endpoints, 2u);
+  EXPECT_TRUE(o.rep.lp_ran);
+}
+
+// ==========================================================================================
+// Annulus (relative homology: LP path)
+// ==========================================================================================
+
+namespace {
+Soup_chain radial(int t, int k0 = 0, int k1 = kNr)
+{
+  Soup_chain c;
+  add_path(c, annulus_radial_path(kNr, kNt, t, k0, k1));
+  return c;
+}
+Soup_chain core_circle(int k = kNr / 2, int t0 = 0)
+{
+  Soup_chain c;
+  add_loop(c, annulus_circle_loop(kNr, kNt, k, t0));
+  return c;
+}
+std::vector<Index> inner_ring(const Soup& s) { return select(s, [](double k, double, int) { return k < kNr / 2; }); }
+std::vector<Index> outer_ring(const Soup& s) { return select(s, [](double k, double, int) { return k > kNr / 2; }); }
+template <class TM>
+std::unique_ptr<Built_mesh<TM>> annulus(unsigned seed)
+{
+  return make_mesh<TM>(make_annulus(kNr, kNt, seed));
+}
+} // namespace
+
+TYPED_TEST(Oracles, A1_RadialArcInnerToOuter)
+{
+  auto m = annulus<TypeParam>(41);
+  const Soup_chain c = radial(0);
+  Outcome o = run(*m, c);
+  check_common(o);
+  check_closed_decomposition(o);
+  expect_constant_W(o);
+  expect_G(o, c);
+  expect_g_on(o, c, 1 - kTolG, 1 + kTolG);
+  EXPECT_EQ(o.rep.interior_endpoints, 0u);
+  EXPECT_TRUE(o.rep.lp_ran);
+}
+
+TYPED_TEST(Oracles, A2_CoreCircle)
+{
+  auto m = annulus<TypeParam>(42);
+  const Soup_chain c = core_circle();
+  Outcome o = run(*m, c);
+  check_common(o);
+  check_closed_decomposition(o);
+  // outer ring is larger (0.4375 pi vs 0.3125 pi)
+  expect_regions(o, inner_ring(m->soup), outer_ring(m->soup), +1, 1, 0);
+  EXPECT_EQ(count_labels(o), 2u);
+  expect_G(o, {});
+  expect_w_two_valued(o, inner_ring(m->soup), outer_ring(m->soup), 1.0, kTolWLP);
+}
+
+TYPED_TEST(Oracles, A3_ArcCuttingOffACap)
+{
+  auto m = annulus<TypeParam>(43);
+  Soup_chain c;
+  add_path(c, annulus_radial_path(kNr, kNt, 10, kNr, 6));       // inwards from the outer border
+  add_path(c, annulus_circle_path(kNr, kNt, 6, 10, 16));         // CCW along k = 6
+  add_path(c, annulus_radial_path(kNr, kNt, 16, 6, kNr));        // back out
+  Outcome o = run(*m, c);
+  check_common(o);
+  check_closed_decomposition(o);
+  auto cap = select(m->soup, [](double k, double t, int) { return in_rect(k, t, 6, 10, kNr, 16); });
+  auto rest = select(m->soup, [](double k, double t, int) { return !in_rect(k, t, 6, 10, kNr, 16); });
+  // the cap is to the right of the curve
+  expect_regions(o, cap, rest, -1, -1, 0);
+  EXPECT_EQ(count_labels(o), 2u);
+  expect_G(o, {});
+  expect_w_two_valued(o, cap, rest, -1.0, kTolWLP);
+}
+
+TYPED_TEST(Oracles, A4_RadialArcWithTwoEdgeGap)
+{
+  auto m = annulus<TypeParam>(44);
+  auto parts = path_with_gap(annulus_radial_path(kNr, kNt, 0, 0, kNr), 3, 2);   // gap k = 3..5
+  Soup_chain c;
+  add_path(c, parts.first);
+  add_path(c, parts.second);
+  Outcome o = run(*m, c);
+  check_common(o);
+  expect_constant_W(o);
+  expect_G(o, radial(0));
+  expect_g_on(o, radial(0), 0.5, 1 + kTolG);   // ~0.80 in the notes' prototype
+  EXPECT_EQ(o.rep.interior_endpoints, 2u);
+}
+
+TYPED_TEST(Oracles, A5_TwoOppositeRadialArcs)
+{
+  auto m = annulus<TypeParam>(45);
+  const Soup_chain c = sum(radial(0), radial(12, kNr, 0));   // out at t = 0, back in at t = 12
+  Outcome o = run(*m, c);
+  check_common(o);
+  check_closed_decomposition(o);
+  auto sector = select(m->soup, [](double, double t, int) { return t < 12; });
+  auto rest = select(m->soup, [](double, double t, int) { return t > 12; });
+  expect_regions(o, sector, rest, +1, 1, 0);
+  EXPECT_EQ(count_labels(o), 2u);
+  expect_G(o, {});
+  expect_w_two_valued(o, sector, rest, 1.0, kTolWLP);
+}
+
+TYPED_TEST(Oracles, A6_RadialArcPlusCoreCircleSharingAVertex)
+{
+  auto m = annulus<TypeParam>(46);
+  const Soup_chain c = sum(radial(0), core_circle(kNr / 2, 0));   // share vertex (4, 0)
+  Outcome o = run(*m, c);
+  check_common(o);
+  check_closed_decomposition(o);
+  expect_regions(o, inner_ring(m->soup), outer_ring(m->soup), +1, 1, 0);
+  EXPECT_EQ(count_labels(o), 2u);
+  expect_G(o, radial(0));   // the arc only
+}
+
+// ==========================================================================================
+// Sphere (closed, genus 0: one solve) and two components
+// ==========================================================================================
+
+TYPED_TEST(Oracles, Sphere_LatitudeLoop)
+{
+  auto m = make_mesh<TypeParam>(make_uv_sphere(kLat, kLon, 51));
+  Soup_chain c;
+  add_loop(c, sphere_ring(kLat, kLon, 4));   // polar angle 60 deg: the cap is 25% of the area
+  Outcome o = run(*m, c);
+  check_common(o);
+  check_closed_decomposition(o);
+  auto cap = select(m->soup, [](double, double p, int) { return p < 4; });
+  auto rest = select(m->soup, [](double, double p, int) { return p > 4; });
+  expect_regions(o, cap, rest, +1, 1, 0);
+  EXPECT_EQ(count_labels(o), 2u);
+  expect_G(o, {});
+  expect_w_two_valued(o, cap, rest, 1.0, kTolW);
+  EXPECT_FALSE(o.rep.lp_ran);
+}
+
+TYPED_TEST(Oracles, Sphere_BrokenLatitudeLoop)
+{
+  auto m = make_mesh<TypeParam>(make_uv_sphere(kLat, kLon, 52));
+  Soup_chain c;
+  add_path(c, loop_with_gap(sphere_ring(kLat, kLon, 6), 5, 2));   // equator, gap q = 5..7
+  Outcome o = run(*m, c);
+  check_common(o);
+  auto away = far_from({{6, 6}}, 3.0, kLon);
+  auto north = select(m->soup, [&](double q, double p, int) { return p < 6 && away(q, p); });
+  auto south = select(m->soup, [&](double q, double p, int) { return p > 6 && away(q, p); });
+  expect_regions(o, north, south, +1);
+  expect_G(o, {});
+  EXPECT_EQ(o.rep.interior_endpoints, 2u);
+  EXPECT_FALSE(o.rep.lp_ran);
+}
+
+TYPED_TEST(Oracles, TwoComponents_EachNormalizedIndependently)
+{
+  const int n = 12;
+  const Soup s = combine(make_disk(n, 61), make_disk(n, 62), 2.0, 0, 0);
+  auto m = make_mesh<TypeParam>(s);
+  const Index off = Index(n + 1) * Index(n + 1);
+  Soup_chain c;
+  add_loop(c, disk_rect_loop(n, 3, 3, 7, 7));            // component 0: small CCW loop
+  std::vector<Index> big = disk_rect_loop(n, 1, 1, 11, 11);
+  for(Index& v : big) v += off;
+  add_loop(c, big);                                      // component 1: CCW loop enclosing 69%
+  Outcome o = run(*m, c);
+  check_common(o);
+  check_closed_decomposition(o);
+  auto in0 = select(m->soup, [](double x, double y, int k) { return k == 0 && in_rect(x, y, 3, 3, 7, 7); });
+  auto out0 = select(m->soup, [](double x, double y, int k) { return k == 0 && !in_rect(x, y, 3, 3, 7, 7); });
+  auto in1 = select(m->soup, [](double x, double y, int k) { return k == 1 && in_rect(x, y, 1, 1, 11, 11); });
+  auto out1 = select(m->soup, [](double x, double y, int k) { return k == 1 && !in_rect(x, y, 1, 1, 11, 11); });
+  expect_regions(o, in0, out0, +1, 1, 0);
+  expect_regions(o, in1, out1, +1, 0, -1);
+  expect_G(o, {});
+  EXPECT_EQ(o.rep.components, 2u);
+}
+
+TYPED_TEST(Oracles, TwoComponents_TorusAndDisk)
+{
+  const Soup s = combine(make_torus(kNu, kNv, 63), make_disk(10, 64), 3.0, 0, 0);
+  auto m = make_mesh<TypeParam>(s);
+  const Index off = Index(kNu) * Index(kNv);
+  Soup_chain c = meridian(6);
+  std::vector<Index> l = disk_rect_loop(10, 2, 2, 5, 5);
+  for(Index& v : l) v += off;
+  add_loop(c, reversed(l));                              // CW loop on the disk
+  Outcome o = run(*m, c);
+  check_common(o);
+  check_closed_decomposition(o);
+  auto tor = select(m->soup, [](double, double, int k) { return k == 0; });
+  auto in1 = select(m->soup, [](double x, double y, int k) { return k == 1 && in_rect(x, y, 2, 2, 5, 5); });
+  auto out1 = select(m->soup, [](double x, double y, int k) { return k == 1 && !in_rect(x, y, 2, 2, 5, 5); });
+  int lt = 0;
+  EXPECT_TRUE(region_label(o, tor, lt));
+  EXPECT_EQ(lt, 0);
+  expect_regions(o, in1, out1, -1, -1, 0);
+  expect_G(o, meridian(6));
+}
+
+// ==========================================================================================
+// Metamorphic checks
+// ==========================================================================================
+
+namespace {
+// W(f) - W(ref) over a set of faces
+std::vector<int> differences(const Outcome& o, const std::vector<Index>& F)
+{
+  std::vector<int> d;
+  for(Index f : F) d.push_back(o.W[f] - o.W[F.front()]);
+  return d;
+}
+std::vector<int> negated(std::vector<int> v)
+{
+  for(int& x : v) x = -x;
+  return v;
+}
+std::vector<Index> concat(std::vector<Index> a, const std::vector<Index>& b)
+{
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+} // namespace
+
+TYPED_TEST(Oracles, Metamorphic_ReversalNegatesWDifferencesAndG_Torus)
+{
+  auto m = torus<TypeParam>(71);
+  const Soup_chain c = t12_chain();
+  Outcome o = run(*m, c), r = run(*m, scaled(c, -1));
+  check_common(o);
+  check_common(r);
+  const auto F = concat(t12_inside(m->soup), t12_outside(m->soup));
+  EXPECT_EQ(differences(r, F), negated(differences(o, F)));
+  expect_regions(r, t12_inside(m->soup), t12_outside(m->soup), -1, -1, 0);
+  expect_G(r, scaled(o.G, -1));
+  for(const auto& kv : o.g) EXPECT_NEAR(r.g.at(kv.first), -kv.second, kTolG);
+}
+
+TYPED_TEST(Oracles, Metamorphic_ReversalNegatesWDifferences_Disk)
+{
+  auto m = make_mesh<TypeParam>(make_disk(kDiskN, 72));
+  Soup_chain c;
+  add_path(c, loop_with_gap(d_loop(), 4, 2));
+  Outcome o = run(*m, c), r = run(*m, scaled(c, -1));
+  check_common(o);
+  check_common(r);
+  auto away = far_from({{9, 4}}, 3.0);
+  const auto F = select(m->soup, [&](double x, double y, int) { return away(x, y); });
+  EXPECT_EQ(differences(r, F), negated(differences(o, F)));
+  // w is linear in the chain (single solve): w_r + w_o is constant
+  double lo = 1e300, hi = -1e300;
+  for(Index f = 0; f < m->soup.num_faces(); ++f)
+    for(int k = 0; k < 3; ++k)
+      if(!std::isnan(o.w[f][k])) { lo = std::min(lo, o.w[f][k] + r.w[f][k]); hi = std::max(hi, o.w[f][k] + r.w[f][k]); }
+  EXPECT_LT(hi - lo, kTolW);
+}
+
+TYPED_TEST(Oracles, Metamorphic_MultiplicityTwoDoubles_Disk)
+{
+  auto m = make_mesh<TypeParam>(make_disk(kDiskN, 73));
+  Soup_chain c;
+  add_loop(c, d_loop(), 2);
+  Outcome o = run(*m, c);
+  check_common(o);
+  check_closed_decomposition(o);
+  expect_regions(o, d_inside(m->soup), d_outside(m->soup), +2, 2, 0);
+  EXPECT_TRUE(o.B == c);
+  expect_w_two_valued(o, d_inside(m->soup), d_outside(m->soup), 2.0, kTolW);
+}
+
+TYPED_TEST(Oracles, Metamorphic_MultiplicityTwoDoubles_TorusLoop)
+{
+  auto m = torus<TypeParam>(74);
+  const Soup_chain c = scaled(torus_square(4, 3, 10, 8), 2);
+  Outcome o = run(*m, c);
+  check_common(o);
+  check_closed_decomposition(o);
+  expect_regions(o, t6_inside(m->soup), t6_outside(m->soup), +2, 2, 0);
+  expect_G(o, {});
+}
+
+TYPED_TEST(Oracles, Metamorphic_MultiplicityTwoDoubles_BrokenMeridian)
+{
+  auto m = torus<TypeParam>(75);
+  const Soup_chain c1 = broken_meridian(6, 4, 2);
+  Outcome o1 = run(*m, c1), o2 = run(*m, scaled(c1, 2));
+  check_common(o1);
+  check_common(o2);
+  expect_constant_W(o2);
+  expect_G(o1, meridian(6));
+  expect_G(o2, meridian(6, 2));
+  for(const auto& kv : o1.g) EXPECT_NEAR(o2.g.at(kv.first), 2 * kv.second, 2 * kTolG);
+}
+
+namespace {
+template <class TM>
+void similarity_case(const Soup& base, const Soup_chain& c, double scale)
+{
+  auto m0 = make_mesh<TM>(base);
+  auto m1 = make_mesh<TM>(transformed(base, scale, {0.3, -1.0, 0.7}, 1.1, {5 * scale, -2 * scale, 0.5 * scale}));
+  Outcome o0 = run(*m0, c), o1 = run(*m1, c);
+  check_common(o0);
+  check_common(o1);
+  EXPECT_EQ(o1.W, o0.W) << "labels changed under a similarity (scale " << scale << ")";
+  expect_G(o1, o0.G);
+  EXPECT_EQ(o1.rep.lp_ran, o0.rep.lp_ran);
+  for(const auto& kv : o0.g) EXPECT_NEAR(o1.g.at(kv.first), kv.second, kTolG);
+}
+} // namespace
+
+TYPED_TEST(Oracles, Metamorphic_SimilarityInvariance_TorusScaleUp)
+{
+  similarity_case<TypeParam>(make_torus(kNu, kNv, 76), t12_chain(), 1e3);
+}
+TYPED_TEST(Oracles, Metamorphic_SimilarityInvariance_TorusScaleDown)
+{
+  similarity_case<TypeParam>(make_torus(kNu, kNv, 77), t12_chain(), 1e-3);
+}
+TYPED_TEST(Oracles, Metamorphic_SimilarityInvariance_DiskScaleUp)
+{
+  Soup_chain c;
+  add_path(c, loop_with_gap(d_loop(), 4, 1));
+  similarity_case<TypeParam>(make_disk(kDiskN, 78), c, 1e3);
+}
+TYPED_TEST(Oracles, Metamorphic_SimilarityInvariance_AnnulusScaleDown)
+{
+  similarity_case<TypeParam>(make_annulus(kNr, kNt, 79), sum(radial(0), core_circle()), 1e-3);
+}
+
+TYPED_TEST(Oracles, Metamorphic_FarBoundingLoopDoesNotChangeG_Torus)
+{
+  auto m = torus<TypeParam>(80);
+  const Soup_chain c = broken_meridian(6, 4, 2);
+  const Soup_chain far_loop = torus_square(14, 3, 19, 8);
+  Outcome o = run(*m, c), f = run(*m, sum(c, far_loop));
+  check_common(o);
+  check_common(f);
+  expect_G(f, o.G);
+  expect_G(o, meridian(6));
+  auto in = select(m->soup, [](double x, double y, int) { return in_rect(x, y, 14, 3, 19, 8); });
+  auto out = select(m->soup, [](double x, double y, int) { return !in_rect(x, y, 14, 3, 19, 8) && x > 9 && x < 22; });
+  expect_regions(f, in, out, +1, 1, 0);
+}
+
+TYPED_TEST(Oracles, Metamorphic_FarBoundingLoopDoesNotChangeG_Annulus)
+{
+  auto m = annulus<TypeParam>(81);
+  auto parts = path_with_gap(annulus_radial_path(kNr, kNt, 0, 0, kNr), 3, 2);
+  Soup_chain c;
+  add_path(c, parts.first);
+  add_path(c, parts.second);
+  Soup_chain far_loop;
+  add_loop(far_loop, [] {   // CCW quadrilateral in (k, t): k 2..6, t 20..26
+    std::vector<Index> l;
+    for(int k = 2; k < 6; ++k) l.push_back(annulus_vid(kNr, kNt, k, 20));
+    for(int t = 20; t < 26; ++t) l.push_back(annulus_vid(kNr, kNt, 6, t));
+    for(int k = 6; k > 2; --k) l.push_back(annulus_vid(kNr, kNt, k, 26));
+    for(int t = 26; t > 20; --t) l.push_back(annulus_vid(kNr, kNt, 2, t));
+    return l;
+  }());
+  Outcome o = run(*m, c), f = run(*m, sum(c, far_loop));
+  check_common(o);
+  check_common(f);
+  expect_G(o, radial(0));
+  expect_G(f, o.G);
+  auto in = select(m->soup, [](double k, double t, int) { return in_rect(k, t, 2, 20, 6, 26); });
+  auto out = select(m->soup, [](double k, double t, int) { return !in_rect(k, t, 2, 20, 6, 26) && t > 4 && t < 44; });
+  expect_regions(f, in, out, +1, 1, 0);
+}
+
+TYPED_TEST(Oracles, Metamorphic_MeshStructuresAgree)
+{
+  // Same soup through the other data structure gives identical labels and G.
+  const Soup s = make_torus(kNu, kNv, 82);
+  auto a = make_mesh<TypeParam>(s);
+  auto b = make_mesh<SM>(s);
+  const Soup_chain c = t12_chain();
+  Outcome oa = run(*a, c), ob = run(*b, c);
+  check_common(oa);
+  check_common(ob);
+  EXPECT_EQ(oa.W, ob.W);
+  expect_G(oa, ob.G);
+}
+
+// ==========================================================================================
+// API: solver class, chain helpers
+// ==========================================================================================
+
+TYPED_TEST(Oracles, SolverClassReusedForManyCurves)
+{
+  auto m = torus<TypeParam>(91);
+  SWN::Surface_winding_numbers_solver<TypeParam> solver(m->tm);
+  const std::vector<Soup_chain> curves = {meridian(6), torus_square(4, 3, 10, 8), t12_chain(),
+                                          broken_meridian(6, 4, 2), meridian(6)};
+  for(std::size_t i = 0; i < curves.size(); ++i)
+  {
+    SCOPED_TRACE("curve " + std::to_string(i));
+    Outcome s = run_with_solver(*m, solver, curves[i]);
+    Outcome f = run(*m, curves[i]);
+    check_common(s);
+    check_common(f);
+    EXPECT_EQ(s.W, f.W);
+    expect_G(s, f.G);
+    EXPECT_TRUE(s.B == f.B);
+  }
+}
+
+TYPED_TEST(Oracles, SolverClassOnDisk)
+{
+  auto m = make_mesh<TypeParam>(make_disk(kDiskN, 92));
+  SWN::Surface_winding_numbers_solver<TypeParam> solver(m->tm);
+  Soup_chain c1, c2;
+  add_loop(c1, d_loop());
+  add_path(c2, loop_with_gap(d_loop(), 4, 2));
+  for(const Soup_chain* c : {&c1, &c2, &c1})
+  {
+    Outcome s = run_with_solver(*m, solver, *c);
+    check_common(s);
+    auto away = far_from({{9, 4}}, 3.0);
+    auto in = select(m->soup, [&](double x, double y, int) { return in_rect(x, y, 4, 4, 14, 14) && away(x, y); });
+    auto out = select(m->soup, [&](double x, double y, int) { return !in_rect(x, y, 4, 4, 14, 14) && away(x, y); });
+    expect_regions(s, in, out, +1, 1, 0);
+  }
+}
+
+TYPED_TEST(Oracles, ChainHelpersMatchSoupChains)
+{
+  using GT = boost::graph_traits<TypeParam>;
+  auto m = torus<TypeParam>(93);
+  const std::vector<Index> loop = torus_rect_loop(kNu, kNv, 4, 3, 10, 8);
+  Soup_chain expected;
+  add_loop(expected, loop);
+  add_loop(expected, torus_meridian(kNu, kNv, 6), 2);
+
+  auto to_soup = [&](const std::unordered_map<typename GT::edge_descriptor, int>& mp) {
+    Soup_chain r;
+    for(const auto& kv : mp)
+      if(kv.second != 0) { auto ks = m->key(kv.first); r[ks.first] = kv.second * ks.second; }
+    return r;
+  };
+
+  // vertex polylines (closed by repeating the first vertex)
+  std::unordered_map<typename GT::edge_descriptor, int> c1;
+  for(auto e : edges(m->tm)) c1[e] = 0;
+  auto pm1 = boost::make_assoc_property_map(c1);
+  std::vector<typename GT::vertex_descriptor> pl;
+  for(Index v : loop) pl.push_back(m->vertex[v]);
+  pl.push_back(pl.front());
+  EXPECT_TRUE(SWN::add_vertex_polyline_to_chain(m->tm, pl, pm1));
+  pl.clear();
+  for(Index v : torus_meridian(kNu, kNv, 6)) pl.push_back(m->vertex[v]);
+  pl.push_back(pl.front());
+  EXPECT_TRUE(SWN::add_vertex_polyline_to_chain(m->tm, pl, pm1));
+  EXPECT_TRUE(SWN::add_vertex_polyline_to_chain(m->tm, pl, pm1));
+  EXPECT_TRUE(to_soup(c1) == expected) << to_string(to_soup(c1)) << "\nvs " << to_string(expected);
+
+  // non-adjacent consecutive vertices: false, nothing added
+  const auto before = c1;
+  std::vector<typename GT::vertex_descriptor> bad = {m->vertex[torus_vid(kNu, kNv, 0, 0)], m->vertex[torus_vid(kNu, kNv, 0, 1)],
+                                                     m->vertex[torus_vid(kNu, kNv, 5, 5)]};
+  EXPECT_FALSE(SWN::add_vertex_polyline_to_chain(m->tm, bad, pm1));
+  EXPECT_TRUE(c1 == before);
+
+  // halfedges: same chain; opposite halfedges cancel
+  std::unordered_map<typename GT::edge_descriptor, int> c2;
+  for(auto e : edges(m->tm)) c2[e] = 0;
+  auto pm2 = boost::make_assoc_property_map(c2);
+  std::vector<typename GT::halfedge_descriptor> hs;
+  for(std::size_t k = 0; k < loop.size(); ++k) hs.push_back(m->halfedge_of(loop[k], loop[(k + 1) % loop.size()]));
+  const std::vector<Index> mer = torus_meridian(kNu, kNv, 6);
+  for(int rep = 0; rep < 2; ++rep)
+    for(std::size_t k = 0; k < mer.size(); ++k) hs.push_back(m->halfedge_of(mer[k], mer[(k + 1) % mer.size()]));
+  auto h0 = m->halfedge_of(torus_vid(kNu, kNv, 20, 1), torus_vid(kNu, kNv, 21, 1));
+  hs.push_back(h0);
+  hs.push_back(opposite(h0, m->tm));
+  SWN::add_halfedges_to_chain(m->tm, hs, pm2);
+  EXPECT_TRUE(to_soup(c2) == expected) << to_string(to_soup(c2));
+
+  // and the solver gives the same result from the helper-built chain
+  Outcome o = run(*m, expected);
+  check_common(o);
+  expect_G(o, meridian(6, 2));
+  expect_regions(o, t6_inside(m->soup), t6_outside(m->soup), +1, 1, 0);
+}
+
+// ==========================================================================================
+// Surface_mesh specifics: native property maps, garbage
+// ==========================================================================================
+
+TEST(OraclesSurfaceMesh, NativePropertyMaps)
+{
+  auto m = make_mesh<SM>(make_disk(kDiskN, 101));
+  SM& sm = m->tm;
+  auto chain = sm.add_property_map<SM::Edge_index, int>("e:chain", 0).first;
+  auto labels = sm.add_property_map<SM::Face_index, int>("f:W", kIntSentinel).first;
+  auto G = sm.add_property_map<SM::Edge_index, int>("e:G", kIntSentinel).first;
+  auto B = sm.add_property_map<SM::Edge_index, int>("e:B", kIntSentinel).first;
+  auto g = sm.add_property_map<SM::Edge_index, double>("e:g", kRealSentinel).first;
+  auto w = sm.add_property_map<SM::Halfedge_index, double>("h:w", kRealSentinel).first;
+  std::vector<SM::Vertex_index> pl;
+  for(Index v : d_loop()) pl.push_back(m->vertex[v]);
+  pl.push_back(pl.front());
+  ASSERT_TRUE(SWN::add_vertex_polyline_to_chain(sm, pl, chain));
+  SWN::Solve_report rep;
+  const bool ok = CGAL::surface_winding_numbers(sm, chain, labels,
+      SWN::parameters::nonbounding_chain_map(G,
+      SWN::parameters::nonbounding_chain_real_map(g,
+      SWN::parameters::bounding_chain_map(B,
+      SWN::parameters::winding_number_map(w,
+      SWN::parameters::report(std::ref(rep)))))));
+  ASSERT_TRUE(ok) << rep.error;
+  for(Index f = 0; f < m->soup.num_faces(); ++f)
+  {
+    const bool in = in_rect(m->soup.fparam[f][0], m->soup.fparam[f][1], 4, 4, 14, 14);
+    EXPECT_EQ(labels[m->face[f]], in ? 1 : 0);
+  }
+  for(auto e : edges(sm))
+  {
+    EXPECT_EQ(G[e], 0);
+    EXPECT_EQ(B[e], chain[e]);
+  }
+  for(auto h : halfedges(sm))
+    if(!is_border(h, sm)) EXPECT_FALSE(w[h] == kRealSentinel);
+}
+
+TEST(OraclesSurfaceMesh, MeshWithGarbage)
+{
+  // A Surface_mesh with removed-but-not-collected elements (index holes) must give the same result.
+  auto m = make_mesh<SM>(make_disk(kDiskN, 102));
+  Soup_chain c;
+  add_loop(c, d_loop());
+  Outcome clean = run(*m, c);
+  SM& sm = m->tm;
+  auto a = sm.add_vertex(Point_3(5, 5, 0)), b = sm.add_vertex(Point_3(6, 5, 0)), d = sm.add_vertex(Point_3(5, 6, 0));
+  auto f = sm.add_face(a, b, d);
+  ASSERT_NE(f, SM::null_face());
+  CGAL::Euler::remove_face(halfedge(f, sm), sm);
+  ASSERT_TRUE(sm.has_garbage());
+  ASSERT_EQ(sm.number_of_faces(), m->soup.num_faces());
+  Outcome dirty = run(*m, c);
+  check_common(clean);
+  check_common(dirty);
+  EXPECT_EQ(dirty.W, clean.W);
+  expect_G(dirty, clean.G);
+  for(Index i = 0; i < clean.w.size(); ++i)
+    for(int k = 0; k < 3; ++k) EXPECT_NEAR(dirty.w[i][k], clean.w[i][k], kTolW);
+}
+
+// ==========================================================================================
+// Bad input: false, report.error set, outputs untouched
+// ==========================================================================================
+
+namespace {
+template <class TM>
+void expect_rejected(Raw_maps<TM>& r, const TM& tm, const char* what)
+{
+  const bool ok = r.call(tm);
+  EXPECT_FALSE(ok) << what << ": accepted";
+  EXPECT_FALSE(r.rep.success) << what;
+  EXPECT_FALSE(r.rep.error.empty()) << what << ": empty error";
+  EXPECT_NE(r.rep.error, "<report not written>") << what << ": report not written";
+  EXPECT_TRUE(r.outputs_untouched()) << what << ": outputs were written";
+}
+} // namespace
+
+TYPED_TEST(Oracles, BadInput_QuadMesh)
+{
+  const int n = 4;
+  std::vector<Point_3> pts;
+  std::vector<std::vector<Index>> quads;
+  for(int j = 0; j <= n; ++j)
+    for(int i = 0; i <= n; ++i) pts.emplace_back(double(i) / n, double(j) / n, 0.);
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i)
+      quads.push_back({disk_vid(n, i, j), disk_vid(n, i + 1, j), disk_vid(n, i + 1, j + 1), disk_vid(n, i, j + 1)});
+  TypeParam tm;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(pts, quads, tm);
+  ASSERT_EQ(num_faces(tm), 16u);
+  Raw_maps<TypeParam> r(tm);
+  expect_rejected(r, tm, "quad mesh");
+}
+
+TYPED_TEST(Oracles, BadInput_MixedTriangleAndQuad)
+{
+  std::vector<Point_3> pts = {Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(1, 1, 0), Point_3(0, 1, 0), Point_3(2, 0.5, 0)};
+  std::vector<std::vector<Index>> polys = {{0, 1, 2, 3}, {1, 4, 2}};
+  TypeParam tm;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(pts, polys, tm);
+  Raw_maps<TypeParam> r(tm);
+  expect_rejected(r, tm, "mixed mesh");
+}
+
+TYPED_TEST(Oracles, BadInput_EmptyMesh)
+{
+  TypeParam tm;
+  Raw_maps<TypeParam> r(tm);
+  expect_rejected(r, tm, "empty mesh");
+}
+
+TYPED_TEST(Oracles, BadInput_ChainOnBorderEdge)
+{
+  auto m = make_mesh<TypeParam>(make_disk(kDiskN, 111));
+  Raw_maps<TypeParam> r(m->tm);
+  Soup_chain c;
+  add_loop(c, d_loop());
+  add_segment(c, disk_vid(kDiskN, 3, 0), disk_vid(kDiskN, 4, 0));   // bottom border edge
+  set_chain(*m, c, r.chain);
+  expect_rejected(r, m->tm, "chain on a border edge");
+}
+
+TYPED_TEST(Oracles, BadInput_NaNCoordinate)
+{
+  auto m = make_mesh<TypeParam>(make_disk(kDiskN, 112));
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  put(get(CGAL::vertex_point, m->tm), m->vertex[disk_vid(kDiskN, 7, 7)], Point_3(nan, 0.35, 0));
+  Raw_maps<TypeParam> r(m->tm);
+  Soup_chain c;
+  add_loop(c, d_loop());
+  set_chain(*m, c, r.chain);
+  expect_rejected(r, m->tm, "NaN coordinate");
+}
+
+TYPED_TEST(Oracles, BadInput_InfiniteCoordinate)
+{
+  auto m = make_mesh<TypeParam>(make_torus(kNu, kNv, 113));
+  const double inf = std::numeric_limits<double>::infinity();
+  put(get(CGAL::vertex_point, m->tm), m->vertex[torus_vid(kNu, kNv, 3, 3)], Point_3(0, inf, 0));
+  Raw_maps<TypeParam> r(m->tm);
+  set_chain(*m, meridian(6), r.chain);
+  expect_rejected(r, m->tm, "infinite coordinate");
+}
+
+TYPED_TEST(Oracles, BadInput_ZeroAreaFace)
+{
+  // regular disk, every cell split along (i,j)-(i+1,j+1): moving (7,7) onto the line x = 8/n
+  // makes the triangle (7,7),(8,7),(8,8) exactly degenerate.
+  auto m = make_mesh<TypeParam>(make_disk(kDiskN, 114, 0.0, false));
+  const double h = 1.0 / kDiskN;
+  put(get(CGAL::vertex_point, m->tm), m->vertex[disk_vid(kDiskN, 7, 7)], Point_3(8 * h, 7.5 * h, 0));
+  Raw_maps<TypeParam> r(m->tm);
+  Soup_chain c;
+  add_loop(c, disk_rect_loop(kDiskN, 12, 12, 16, 16));
+  set_chain(*m, c, r.chain);
+  expect_rejected(r, m->tm, "zero-area face");
+}
+
+TYPED_TEST(Oracles, BadInput_CoincidentVertices)
+{
+  auto m = make_mesh<TypeParam>(make_disk(kDiskN, 115));
+  const Point_3 p = get(CGAL::vertex_point, m->tm, m->vertex[disk_vid(kDiskN, 8, 7)]);
+  put(get(CGAL::vertex_point, m->tm), m->vertex[disk_vid(kDiskN, 7, 7)], p);
+  Raw_maps<TypeParam> r(m->tm);
+  Soup_chain c;
+  add_loop(c, disk_rect_loop(kDiskN, 12, 12, 16, 16));
+  set_chain(*m, c, r.chain);
+  expect_rejected(r, m->tm, "coincident vertices (zero-area faces)");
+}
+
+TYPED_TEST(Oracles, BadInput_SolverClassReportsError)
+{
+  auto m = make_mesh<TypeParam>(make_disk(kDiskN, 116));
+  Raw_maps<TypeParam> r(m->tm);
+  Soup_chain c;
+  add_segment(c, disk_vid(kDiskN, 0, 3), disk_vid(kDiskN, 0, 4));   // left border edge
+  set_chain(*m, c, r.chain);
+  SWN::Surface_winding_numbers_solver<TypeParam> solver(m->tm);
+  const bool ok = r.call_solver(solver);
+  EXPECT_FALSE(ok);
+  EXPECT_FALSE(r.rep.error.empty());
+  EXPECT_TRUE(r.outputs_untouched());
+}
