@@ -34,7 +34,9 @@
 
   <b>Chain convention.</b> `chain[e]` (indexed by the `Surface_mesh` edge index) counts how many times the curve
   runs along `halfedge(e, mesh)` (from `source(halfedge(e))` to `target(halfedge(e))`), minus how many times it
-  runs the other way.
+  runs the other way. Here `e` is the descriptor from `edges(mesh)`, whose halfedge is the halfedge of index
+  `2*e`. (Pitfall: in CGAL 5.5 the descriptor `edge(h, mesh)` remembers `h`, so `halfedge(edge(h, mesh), mesh)`
+  returns `h` itself, which may be the odd halfedge `2*e+1`.)
 
   <b>No cut needed.</b> If every point used by a segment is a vertex point (consecutive vertices of a segment
   are then adjacent, as validated by the readers), the mesh is copied unchanged and each segment adds +1 along
@@ -64,7 +66,7 @@
     (closed loops without such a vertex are never refined);
   - a piece with n < N edges (N = `Cut_options::min_piece_edges`, default 8) that ends at an *interior*
     endpoint is refined: each of its edges is split at its midpoint into 2^k sub-edges, with
-    k = floor(log2(floor(N/n))) (n=1: 8 sub-edges, n=2: 4 each, n=3..7: 2 each). This is the authors' rule
+    k = max(1, floor(log2(floor(N/n)))) (n=1: 8 sub-edges, n=2: 4 each, n=3..7: 2 each). This is the authors' rule
     (`splitEdgesIfNecessary`, MAX_EDGE_SPLITS = 3) without their shared-counter quirk, with pieces also broken
     at junctions, and without refining pieces whose both ends are on the mesh boundary;
   - a split joins the new vertex to the opposite vertex of each incident face (2 new faces per interior edge,
@@ -187,6 +189,15 @@ inline void triangulate_convex_polygon(std::vector<std::size_t> poly, std::vecto
     out.push_back({poly[0], poly[1], poly[2]});
 }
 
+// In CGAL 5.5, `Surface_mesh::edge(h)` keeps `h` inside the edge descriptor, so `halfedge(edge(h))` is `h`
+// itself. The reference halfedge of edge index i is halfedge 2i (what `halfedge(e, mesh)` returns for the
+// descriptors of `edges(mesh)`): always test the parity instead.
+template <class Halfedge_index>
+bool is_canonical(Halfedge_index h)
+{
+  return (std::size_t(h) & 1) == 0;
+}
+
 template <class Point>
 std::array<double, 3> to_array(const Point& p)
 {
@@ -202,7 +213,7 @@ void add_chain(const Mesh& m, std::vector<int>& chain, std::size_t a, std::size_
   if(!hb.second)
     throw std::logic_error("conforming_cut: missing edge (" + std::to_string(a) + ", " + std::to_string(b) + ")");
   auto e = m.edge(hb.first);
-  chain[std::size_t(e)] += (m.halfedge(e) == hb.first) ? value : -value;
+  chain[std::size_t(e)] += is_canonical(hb.first) ? value : -value;
 }
 
 template <class Mesh>
@@ -212,7 +223,7 @@ void split_edge_recursively(Mesh& m, std::vector<int>& chain, typename Mesh::Hal
   typedef typename Mesh::Halfedge_index Halfedge_index;
   if(m.is_border(h)) h = m.opposite(h);
   auto e = m.edge(h);
-  int ch = (m.halfedge(e) == h) ? chain[std::size_t(e)] : -chain[std::size_t(e)];
+  int ch = is_canonical(h) ? chain[std::size_t(e)] : -chain[std::size_t(e)];
   auto pu = m.point(m.source(h));
   auto pv = m.point(m.target(h));
   Halfedge_index hnew = CGAL::Euler::split_edge(h, m);  // hnew: u->w, h: w->v
@@ -222,7 +233,7 @@ void split_edge_recursively(Mesh& m, std::vector<int>& chain, typename Mesh::Hal
                               (CGAL::to_double(pu.z()) + CGAL::to_double(pv.z())) / 2);
   chain.resize(m.number_of_edges(), 0);
   auto enew = m.edge(hnew);
-  chain[std::size_t(enew)] = (m.halfedge(enew) == hnew) ? ch : -ch;
+  chain[std::size_t(enew)] = is_canonical(hnew) ? ch : -ch;
   if(!m.is_border(hnew))
     CGAL::Euler::split_face(hnew, m.next(h), m);
   Halfedge_index oh = m.opposite(h), ohn = m.opposite(hnew);  // v->w, w->u
@@ -253,14 +264,14 @@ std::size_t refine_short_pieces(Mesh& m, std::vector<int>& chain, std::size_t mi
   }
   auto is_break = [&](std::size_t v) { return boundary[v] != 0 || degree[v] != 2; };
   auto interior_endpoint = [&](std::size_t v) {
-    return boundary[v] != 0 && !m.is_border(typename Mesh::Vertex_index(static_cast<typename Mesh::size_type>(v)), false);
+    return boundary[v] != 0 && !m.is_border(typename Mesh::Vertex_index(static_cast<typename Mesh::size_type>(v)));
   };
   std::vector<char> visited(m.number_of_edges(), 0);
   std::vector<std::vector<Halfedge_index> > risky;
   for(auto v : m.vertices())
   {
     if(degree[std::size_t(v)] == 0 || !is_break(std::size_t(v))) continue;
-    for(auto h0 : CGAL::halfedges_around_source(m.halfedge(v) == Mesh::null_halfedge() ? Halfedge_index() : m.opposite(m.halfedge(v)), m))
+    for(auto h0 : CGAL::halfedges_around_source(v, m))
     {
       if(chain[std::size_t(m.edge(h0))] == 0 || visited[std::size_t(m.edge(h0))]) continue;
       std::vector<Halfedge_index> piece;
@@ -287,6 +298,7 @@ std::size_t refine_short_pieces(Mesh& m, std::vector<int>& chain, std::size_t mi
     std::size_t n = piece.size();
     std::size_t q = min_edges / n, k = 0;
     while((std::size_t(1) << (k + 1)) <= q) ++k;
+    k = std::max<std::size_t>(k, 1);  // every edge of a short piece is split at least once
     for(Halfedge_index h : piece)
       split_edge_recursively(m, chain, h, k);
   }
@@ -326,7 +338,7 @@ std::vector<int> vertex_curve_chain(const CGAL::Surface_mesh<Point>& mesh, const
       throw Input_error(curve.file, s.line, "vertices " + std::to_string(p.element) + " and " +
                                                std::to_string(q.element) + " are not adjacent");
     auto e = mesh.edge(hb.first);
-    chain[std::size_t(e)] += (mesh.halfedge(e) == hb.first) ? 1 : -1;
+    chain[std::size_t(e)] += internal::is_canonical(hb.first) ? 1 : -1;
   }
   return chain;
 }
@@ -562,7 +574,7 @@ Cut_result<Point> conforming_cut(const CGAL::Surface_mesh<Point>& mesh, const st
         if(it != along.end())
         {
           const auto& list = it->second;
-          bool fwd = (mesh.halfedge(mesh.edge(g)) == g);
+          bool fwd = internal::is_canonical(g);
           for(std::size_t m = 1; m + 1 < list.size(); ++m)
           {
             cyc.push_back(fwd ? list[m] : list[list.size() - 1 - m]);
