@@ -38,6 +38,7 @@ struct Solve_report
 {
   bool success = false;              ///< `true` iff all outputs were written
   std::string error;                 ///< why the solve failed (empty on success)
+  bool invalid_input = false;        ///< the failure came from the input (`Invalid_input`), not from a solver
 
   std::size_t vertices = 0, edges = 0, faces = 0;
   std::size_t components = 0;        ///< connected components of the mesh

@@ -123,6 +123,11 @@ public:
       core_.reset(new internal::Winding_number_core<LA>(mesh_tables(vpm, traits)));
       core_->fill_mesh_report(report_);
     }
+    catch(const Invalid_input& e)
+    {
+      report_.error = e.what();
+      report_.invalid_input = true;
+    }
     catch(const std::exception& e)
     {
       report_.error = e.what();
@@ -160,7 +165,7 @@ public:
     if(core_) core_->fill_mesh_report(rep);
     try
     {
-      if(!core_) throw Invalid_input(construction_error);
+      if(!core_) throw Invalid_input(construction_error);   // the mesh was rejected by the constructor
       const double epsilon = choose_parameter(get_parameter(np, snp::epsilon), 0.01);
       const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
 
@@ -180,6 +185,12 @@ public:
       }
       write_outputs(r, label_map, np);
       rep.success = true;
+    }
+    catch(const Invalid_input& e)
+    {
+      rep.success = false;
+      rep.invalid_input = true;
+      rep.error = e.what();
     }
     catch(const std::exception& e)
     {

@@ -46,6 +46,7 @@ namespace parameters {
 
 /// \name Output maps
 /// @{
+
 /// edge -> integer: the nonbounding loops G, signed along `halfedge(e, tm)`
 CGAL_SWN_NAMED_PARAMETER(nonbounding_chain_map_t, nonbounding_chain_map)
 /// edge -> double: the real-valued nonbounding chain g (jumps of the residual function)
@@ -59,6 +60,7 @@ CGAL_SWN_NAMED_PARAMETER(report_t, report)
 /// @}
 /// \name Settings
 /// @{
+
 /// relative cost of jumps of the residual function across the curve (paper: 0.01)
 CGAL_SWN_NAMED_PARAMETER(epsilon_t, epsilon)
 /// `std::ref(lp)` of a model of `SurfaceWindingNumbersLPTraits`

@@ -1,0 +1,296 @@
+// swn: surface winding numbers from the command line.
+//
+//   swn MESH [--curve FILE] [--output-dir DIR] [--epsilon X] [--lp-solver NAME]
+//            [--linear-solver NAME] [--quiet] [--verbose]
+//
+// Reads a triangle mesh (OFF, OBJ, PLY, STL; order kept) and curves (inline OBJ `l` lines and/or a
+// curve file), cuts the mesh so that the curves lie on edges, solves, and writes every output of
+// the method to DIR atomically. Exit codes: 0 success, 1 solver or output failure, 2 bad input.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/surface_winding_numbers.h>
+#include <CGAL/Surface_winding_numbers/IO/conforming_cut.h>
+#include <CGAL/Surface_winding_numbers/IO/curve_io.h>
+#include <CGAL/Surface_winding_numbers/IO/read_mesh.h>
+#include <CGAL/Surface_winding_numbers/IO/write_outputs.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+namespace SWN = CGAL::Surface_winding_numbers;
+namespace SIO = CGAL::Surface_winding_numbers::IO;
+
+static const char* usage =
+  "usage: swn MESH [options]\n"
+  "\n"
+  "Computes surface winding numbers (Feng, Gillespie, Crane 2023) of curves on a triangle mesh.\n"
+  "\n"
+  "  MESH                   triangle mesh: .off .obj .ply .stl (vertex and face order are kept);\n"
+  "                         `l` polylines in an OBJ file are read as curves (1-based, #offset honoured)\n"
+  "  --curve FILE           curve file: the authors' format (v / e / l / #offset lines), or a file whose\n"
+  "                         first line is `# swn polylines` (0-based vertex polylines, one per line) or\n"
+  "                         `# swn halfedges` (lines `h SRC DST [multiplicity]`)\n"
+  "  --output-dir DIR       write labels.txt, mesh.ply, w.obj, bounding.obj, nonbounding.obj,\n"
+  "                         completed.obj and summary.json to DIR (created; written atomically)\n"
+  "  --epsilon X            relative cost of residual jumps across the curve (default 0.01)\n"
+  "  --lp-solver NAME       residual linear program solver: glpk (default)\n"
+  "  --linear-solver NAME   sparse Cholesky solver: ldlt (Eigen SimplicialLDLT, default)\n"
+  "  --quiet                print nothing but errors\n"
+  "  --verbose              print every step with its timing to stderr\n"
+  "  --help                 this text\n"
+  "\n"
+  "Labels W are integers per face; in every connected component the label covering the largest area\n"
+  "is 0. Curves crossing an edge from right to left raise W by one: the inside of a counter-clockwise\n"
+  "loop (seen from the side the faces are oriented towards) is +1.\n"
+  "\n"
+  "examples:\n"
+  "  swn data/swn-demo/torus.obj --curve data/swn-demo/torus-phi.txt --output-dir out/torus\n"
+  "  swn data/swn-demo/DoubleTorusWithLoops.obj --output-dir out/dt --verbose\n"
+  "  swn data/swn-demo/bunny.obj --curve data/swn-demo/bunny-brokenheart.txt --output-dir out/bunny\n"
+  "\n"
+  "exit status: 0 success, 1 solver or output failure, 2 bad input (the message names file and line)\n";
+
+namespace {
+
+struct Usage_error : std::runtime_error
+{
+  explicit Usage_error(const std::string& s) : std::runtime_error(s) {}
+};
+
+struct Options
+{
+  std::string mesh, curve, output_dir, lp_solver = "glpk", linear_solver = "ldlt";
+  double epsilon = 0.01;
+  bool quiet = false, verbose = false, help = false;
+};
+
+Options parse_arguments(int argc, char** argv)
+{
+  Options o;
+  for(int i = 1; i < argc; ++i)
+  {
+    std::string a = argv[i], value;
+    const std::size_t eq = a.find('=');
+    const bool has_inline_value = a.rfind("--", 0) == 0 && eq != std::string::npos;
+    if(has_inline_value) { value = a.substr(eq + 1); a = a.substr(0, eq); }
+    auto next = [&]() -> std::string {
+      if(has_inline_value) return value;
+      if(i + 1 >= argc) throw Usage_error("option " + a + " needs a value");
+      return argv[++i];
+    };
+    if(a == "--help" || a == "-h") o.help = true;
+    else if(a == "--curve") o.curve = next();
+    else if(a == "--output-dir") o.output_dir = next();
+    else if(a == "--lp-solver") o.lp_solver = next();
+    else if(a == "--linear-solver") o.linear_solver = next();
+    else if(a == "--quiet") o.quiet = true;
+    else if(a == "--verbose") o.verbose = true;
+    else if(a == "--epsilon")
+    {
+      const std::string v = next();
+      char* end = nullptr;
+      o.epsilon = std::strtod(v.c_str(), &end);
+      if(v.empty() || *end != '\0' || !(o.epsilon > 0) || !std::isfinite(o.epsilon))
+        throw Usage_error("--epsilon needs a positive number, got '" + v + "'");
+    }
+    else if(a.rfind("-", 0) == 0 && a.size() > 1) throw Usage_error("unknown option " + a);
+    else if(o.mesh.empty()) o.mesh = a;
+    else throw Usage_error("unexpected argument '" + a + "' (only one mesh)");
+  }
+  if(o.help) return o;
+  if(o.mesh.empty()) throw Usage_error("no mesh file given");
+  if(o.lp_solver != "glpk") throw Usage_error("unknown --lp-solver '" + o.lp_solver + "' (available: glpk)");
+  if(o.linear_solver != "ldlt") throw Usage_error("unknown --linear-solver '" + o.linear_solver + "' (available: ldlt)");
+  return o;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point t0)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  Options opt;
+  try
+  {
+    opt = parse_arguments(argc, argv);
+  }
+  catch(const Usage_error& e)
+  {
+    std::cerr << "swn: " << e.what() << "\n(swn --help for usage)\n";
+    return 2;
+  }
+  if(opt.help) { std::cout << usage; return 0; }
+  auto log = [&](const std::string& s) { if(opt.verbose) std::cerr << "[swn] " << s << "\n"; };
+
+  const auto t_start = std::chrono::steady_clock::now();
+  Mesh input;
+  SIO::Mesh_read_info info;
+  std::vector<SIO::Curve_set> curves;
+  SIO::Cut_result<K::Point_3> cut;
+  double t_read = 0, t_cut = 0;
+  try
+  {
+    auto t0 = std::chrono::steady_clock::now();
+    info = SIO::read_mesh(opt.mesh, input);
+    for(const std::string& w : info.warnings)
+      if(!opt.quiet) std::cerr << "swn: warning: " << w << "\n";
+    if(SIO::has_curve_records(info)) curves.push_back(SIO::curve_set_from_obj(info, input));
+    if(!opt.curve.empty()) curves.push_back(SIO::read_curve_file(opt.curve, input));
+    if(curves.empty())
+      throw SIO::Input_error(opt.mesh, 0, "no curve: give --curve FILE, or `l` lines in an OBJ mesh");
+    t_read = seconds_since(t0);
+    log("read " + std::to_string(num_vertices(input)) + " vertices, " + std::to_string(num_faces(input)) + " faces");
+    t0 = std::chrono::steady_clock::now();
+    cut = SIO::conforming_cut(input, curves);
+    t_cut = seconds_since(t0);
+    log("curve on edges: " + std::to_string(cut.cut_new_vertices) + " vertices from the cut, " +
+        std::to_string(cut.refine_new_vertices) + " from refining short pieces");
+  }
+  catch(const SIO::Input_error& e)
+  {
+    std::cerr << "swn: error: " << e.what() << "\n";
+    return 2;
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << "swn: error: " << opt.mesh << ": " << e.what() << "\n";
+    return 2;
+  }
+
+  // Solve on the mesh the curve lives on.
+  Mesh& mesh = cut.mesh;
+  auto chain = mesh.add_property_map<Mesh::Edge_index, int>("e:swn_chain", 0).first;
+  for(auto e : edges(mesh)) chain[e] = cut.chain[std::size_t(e)];
+  auto labels = mesh.add_property_map<Mesh::Face_index, int>("f:label", 0).first;
+  auto w = mesh.add_property_map<Mesh::Halfedge_index, double>("h:w", 0.).first;
+  auto G = mesh.add_property_map<Mesh::Edge_index, int>("e:G", 0).first;
+  auto g = mesh.add_property_map<Mesh::Edge_index, double>("e:g", 0.).first;
+  auto B = mesh.add_property_map<Mesh::Edge_index, int>("e:bounding", 0).first;
+  SWN::Solve_report report;
+  SWN::GLPK_linear_program_traits lp;
+  lp.set_verbose(false);
+  const bool ok = CGAL::surface_winding_numbers(
+    mesh, chain, labels,
+    SWN::parameters::winding_number_map(w, SWN::parameters::nonbounding_chain_map(G,
+    SWN::parameters::nonbounding_chain_real_map(g, SWN::parameters::bounding_chain_map(B,
+    SWN::parameters::epsilon(opt.epsilon, SWN::parameters::lp_solver(std::ref(lp),
+    SWN::parameters::report(std::ref(report)))))))).verbose(opt.verbose));
+  if(!ok)
+  {
+    const bool bad_input = report.invalid_input;
+    std::cerr << "swn: error: " << (bad_input ? opt.mesh + ": " : std::string()) << report.error << "\n";
+    return bad_input ? 2 : 1;
+  }
+
+  // Region statistics
+  std::map<int, std::pair<std::size_t, double>> histogram;
+  for(auto f : faces(mesh))
+  {
+    auto h = halfedge(f, mesh);
+    const K::Point_3 &p = mesh.point(source(h, mesh)), &q = mesh.point(target(h, mesh)),
+                     &r = mesh.point(target(next(h, mesh), mesh));
+    auto& entry = histogram[labels[f]];
+    ++entry.first;
+    entry.second += std::sqrt(CGAL::to_double(CGAL::squared_area(p, q, r)));
+  }
+  std::size_t G_edges = 0, bounding_edges = 0;
+  for(auto e : edges(mesh)) { G_edges += G[e] != 0; bounding_edges += B[e] != 0; }
+
+  double t_write = 0;
+  if(!opt.output_dir.empty())
+  {
+    const auto t0 = std::chrono::steady_clock::now();
+    try
+    {
+      SIO::Atomic_output_dir out(opt.output_dir);
+      SIO::write_labels(out.path("labels.txt"), mesh, labels);
+      SIO::write_labeled_ply(out.path("mesh.ply"), mesh, labels, w);
+      SIO::write_w_obj(out.path("w.obj"), mesh, w);
+      SIO::write_chain_obj(out.path("bounding.obj"), mesh, B);
+      SIO::write_chain_obj(out.path("nonbounding.obj"), mesh, G);
+      auto completed = mesh.add_property_map<Mesh::Edge_index, int>("e:completed", 0).first;
+      for(auto e : edges(mesh)) completed[e] = B[e] + G[e];
+      SIO::write_chain_obj(out.path("completed.obj"), mesh, completed);
+      t_write = seconds_since(t0);
+
+      SIO::Json j;
+      j.begin_object();
+      j.key("version").value(std::string("0.1.0"));
+      j.key("input").begin_object()
+        .key("mesh").value(opt.mesh).key("curve").value(opt.curve)
+        .key("vertices").value(info.number_of_vertices).key("faces").value(info.number_of_faces)
+        .key("unreferenced_vertices").value(info.unreferenced_vertices)
+        .key("duplicated_vertex_positions").value(info.duplicated_vertex_positions)
+        .end_object();
+      j.key("solved_mesh").begin_object()
+        .key("vertices").value(report.vertices).key("edges").value(report.edges).key("faces").value(report.faces)
+        .key("components").value(report.components).key("genus").value(std::size_t(report.genus))
+        .key("border_edges").value(report.border_edges)
+        .key("cut_new_vertices").value(cut.cut_new_vertices).key("refine_new_vertices").value(cut.refine_new_vertices)
+        .key("clamped_cotan_weights").value(report.degenerate_weights)
+        .end_object();
+      j.key("curve").begin_object()
+        .key("edges").value(report.curve_edges).key("interior_endpoints").value(report.interior_endpoints)
+        .key("nonbounding_edges").value(G_edges).key("bounding_edges").value(bounding_edges)
+        .end_object();
+      j.key("method").begin_object()
+        .key("epsilon").value(opt.epsilon)
+        .key("homology_correction").value(report.homology_correction)
+        .key("hodge_projection").value(report.hodge_projection)
+        .key("lp_ran").value(report.lp_ran)
+        .key("lp_variables").value(report.lp_variables).key("lp_rows").value(report.lp_rows)
+        .key("lp_objective").value(report.lp_objective)
+        .key("lp_solver").value(opt.lp_solver).key("linear_solver").value(opt.linear_solver)
+        .end_object();
+      j.key("labels").begin_array();
+      for(const auto& h : histogram)
+        j.begin_object().key("label").value(double(h.first)).key("faces").value(h.second.first)
+          .key("area").value(h.second.second).end_object();
+      j.end_array();
+      j.key("timings_seconds").begin_object()
+        .key("read").value(t_read).key("curve_on_edges").value(t_cut)
+        .key("jump_laplace").value(report.time_setup + report.time_jump_laplace)
+        .key("hodge").value(report.time_hodge).key("residual").value(report.time_residual)
+        .key("second_solve").value(report.time_second_solve).key("labels").value(report.time_labels)
+        .key("write").value(t_write).key("io").value(t_read + t_write)
+        .key("total").value(seconds_since(t_start))
+        .end_object();
+      j.end_object();
+      SIO::write_text_file(out.path("summary.json"), j.str());
+      out.commit();
+    }
+    catch(const std::exception& e)
+    {
+      std::cerr << "swn: error: writing " << opt.output_dir << ": " << e.what() << "\n";
+      return 1;
+    }
+  }
+
+  if(!opt.quiet)
+  {
+    std::cout << "mesh: " << opt.mesh << ": " << info.number_of_vertices << " vertices, " << info.number_of_faces
+              << " faces; solved on " << report.vertices << " vertices, " << report.faces << " faces, genus "
+              << report.genus << ", " << report.components << " component(s)\n"
+              << "curve: " << report.curve_edges << " edges, " << report.interior_endpoints << " interior endpoints\n"
+              << "labels:";
+    for(const auto& h : histogram) std::cout << "  W=" << h.first << ": " << h.second.first << " faces";
+    std::cout << "\nnonbounding loops G: " << G_edges << " edges; bounding chain: " << bounding_edges << " edges\n"
+              << "residual LP: " << (report.lp_ran ? "solved (" + std::to_string(report.lp_variables) + " variables)" : std::string("not needed"))
+              << "; total " << seconds_since(t_start) << " s\n";
+    if(!opt.output_dir.empty()) std::cout << "outputs written to " << opt.output_dir << "/\n";
+  }
+  return 0;
+}
