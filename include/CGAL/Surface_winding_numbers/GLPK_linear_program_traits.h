@@ -75,6 +75,7 @@ public:
   void set_verbose(bool b) { verbose_ = b; }
   /// simplex time limit in seconds (0: none)
   void set_time_limit(double seconds) { time_limit_ = seconds; }
+  /// the value that stands for "no bound" (`std::numeric_limits<double>::%infinity()`)
   static double infinity() { return std::numeric_limits<double>::infinity(); }
 
   /// solves the program; on `LP_status::OPTIMAL` writes the `n` variable values to `x`

@@ -17,6 +17,7 @@ namespace Surface_winding_numbers {
 /// `bool` catch it and copy its message to `Solve_report::error`.
 struct Invalid_input : std::runtime_error
 {
+  /// builds the exception; `what()` returns `what`
   explicit Invalid_input(const std::string& what) : std::runtime_error(what) {}
 };
 
@@ -24,6 +25,7 @@ struct Invalid_input : std::runtime_error
 /// Exception thrown inside the package when a numerical step fails (factorization, linear program).
 struct Solver_failure : std::runtime_error
 {
+  /// builds the exception; `what()` returns `what`
   explicit Solver_failure(const std::string& what) : std::runtime_error(what) {}
 };
 
@@ -36,27 +38,57 @@ enum class LP_status { OPTIMAL, INFEASIBLE, UNBOUNDED, FAILED };
 /// parameter `report`, by `CGAL::surface_winding_numbers()`.
 struct Solve_report
 {
+  /// \name Outcome
+  /// @{
+
   bool success = false;              ///< `true` iff all outputs were written
   std::string error;                 ///< why the solve failed (empty on success)
   bool invalid_input = false;        ///< the failure came from the input (`Invalid_input`), not from a solver
+  /// @}
+  /// \name Mesh
+  /// @{
 
+  /// numbers of vertices, edges and faces of the mesh
   std::size_t vertices = 0, edges = 0, faces = 0;
   std::size_t components = 0;        ///< connected components of the mesh
-  std::size_t border_edges = 0;
+  std::size_t border_edges = 0;      ///< edges with a single incident face
   int genus = 0;                     ///< sum of the genera of the components
+  /// @}
+  /// \name Curve
+  /// @{
+
   std::size_t curve_edges = 0;       ///< edges with a nonzero chain value
   std::size_t interior_endpoints = 0;///< vertices not on the border where the chain has a boundary
+  /// @}
+  /// \name Steps that ran
+  /// @{
+
   bool homology_correction = false;  ///< `false` when every component is a disk or a sphere (one solve)
   bool hodge_projection = false;     ///< `true` when the harmonic part was projected (open curves)
   bool lp_ran = false;               ///< the residual function (Eq. 11) was computed
+  /// @}
+  /// \name Residual linear program and weights
+  /// @{
+
+  /// numbers of variables and of rows of the residual linear program (0 if it did not run)
   std::size_t lp_variables = 0, lp_rows = 0;
   double lp_objective = 0;           ///< Eq. 11 objective, curve edges weighted by epsilon, lengths in units of the mean edge length
   std::size_t degenerate_weights = 0;///< cotangent weights clamped to [1e-3, 1e3]
-  int min_label = 0, max_label = 0;
+  /// @}
+  /// \name Labels
+  /// @{
 
-  /// seconds spent in each step
+  /// smallest and largest label written (after normalization)
+  int min_label = 0, max_label = 0;
+  /// @}
+  /// \name Timings
+  /// @{
+
+  /// seconds spent in each step (setup, first jump Laplace solve, Hodge projection, residual, second
+  /// solve, labels) and in total
   double time_setup = 0, time_jump_laplace = 0, time_hodge = 0, time_residual = 0,
          time_second_solve = 0, time_labels = 0, time_total = 0;
+  /// @}
 };
 
 } // namespace Surface_winding_numbers

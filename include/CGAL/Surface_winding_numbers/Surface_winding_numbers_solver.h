@@ -100,8 +100,10 @@ public:
   /*!
   builds the solver for `tm`.
   \tparam NamedParameters a sequence of named parameters
+  \param tm the triangle mesh; it must outlive the solver and must not be modified while the solver is in use
   \param np optional: `vertex_point_map` (default: the internal point map of `tm`) and `geom_traits`
          (default: the kernel of the point type), as everywhere in CGAL.
+
   If the mesh is invalid, `is_valid()` is `false`, `report().error` says why, and `solve()` fails.
   */
   template <class NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -141,10 +143,13 @@ public:
   const Solve_report& report() const { return report_; }
 
   /*!
-  computes the winding number labels of the curve `chain` and writes them to `label_map`.
+  computes the winding number labels of the curve `chain_map` and writes them to `label_map`.
   \tparam ChainMap a model of `ReadablePropertyMap`, key `edge_descriptor`, integer value: the signed
           number of times the curves traverse the edge, positive along `halfedge(e, tm)`
   \tparam LabelMap a model of `WritablePropertyMap`, key `face_descriptor`, integer value
+  \tparam NamedParameters a sequence of named parameters
+  \param chain_map the input curves, as an integer 1-chain on the edges
+  \param label_map receives the winding number label W of every face
   \param np optional named parameters among `nonbounding_chain_map`, `nonbounding_chain_real_map`,
          `bounding_chain_map`, `winding_number_map`, `epsilon`, `lp_solver`, `report`, `verbose`
          (see `CGAL::surface_winding_numbers()`).
