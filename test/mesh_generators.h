@@ -371,6 +371,45 @@ inline Soup transformed(const Soup& in, double scale, std::array<double, 3> axis
   return out;
 }
 
+// The same surface with vertices and faces renumbered at random and every triangle's vertex
+// list rotated (orientation kept). new_vertex[old] and new_face[old] give the new indices.
+struct Permuted_soup
+{
+  Soup soup;
+  std::vector<Index> new_vertex, new_face;
+};
+
+inline Permuted_soup permuted(const Soup& in, unsigned seed)
+{
+  std::mt19937 rng(seed);
+  Permuted_soup p;
+  const std::size_t nv = in.num_vertices(), nf = in.num_faces();
+  std::vector<Index> old_of_new_v(nv), old_of_new_f(nf);
+  for(Index i = 0; i < nv; ++i) old_of_new_v[i] = i;
+  for(Index i = 0; i < nf; ++i) old_of_new_f[i] = i;
+  std::shuffle(old_of_new_v.begin(), old_of_new_v.end(), rng);
+  std::shuffle(old_of_new_f.begin(), old_of_new_f.end(), rng);
+  p.new_vertex.resize(nv);
+  p.new_face.resize(nf);
+  for(Index i = 0; i < nv; ++i) p.new_vertex[old_of_new_v[i]] = i;
+  for(Index i = 0; i < nf; ++i) p.new_face[old_of_new_f[i]] = i;
+  for(Index i = 0; i < nv; ++i)
+  {
+    p.soup.points.push_back(in.points[old_of_new_v[i]]);
+    p.soup.vparam.push_back(in.vparam[old_of_new_v[i]]);
+  }
+  std::uniform_int_distribution<int> rot(0, 2);
+  for(Index i = 0; i < nf; ++i)
+  {
+    const Triangle& t = in.triangles[old_of_new_f[i]];
+    const int r = rot(rng);
+    p.soup.triangles.push_back({p.new_vertex[t[r]], p.new_vertex[t[(r + 1) % 3]], p.new_vertex[t[(r + 2) % 3]]});
+    p.soup.fparam.push_back(in.fparam[old_of_new_f[i]]);
+    p.soup.fcomponent.push_back(in.fcomponent[old_of_new_f[i]]);
+  }
+  return p;
+}
+
 inline double triangle_area(const Soup& s, std::size_t f)
 {
   const Triangle& t = s.triangles[f];

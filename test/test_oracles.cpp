@@ -20,12 +20,15 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <gtest/gtest.h>
+#include <gtest/gtest-spi.h>
 
 #include "mesh_generators.h"
 
 #include <algorithm>
 #include <array>
 #include <climits>
+#include <cstdlib>
+#include <iostream>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -45,6 +48,23 @@ using SM = CGAL::Surface_mesh<Point_3>;
 using PH = CGAL::Polyhedron_3<Kernel>;
 
 namespace {
+
+// Seeds of the random meshes. SWN_ORACLE_SEED_OFFSET=k (environment) shifts all of them, to run
+// the whole suite on other random meshes; SWN_ORACLE_DIAG=1 prints per-solve diagnostics.
+unsigned seed(unsigned s)
+{
+  static const unsigned offset = [] {
+    const char* e = std::getenv("SWN_ORACLE_SEED_OFFSET");
+    return e ? unsigned(std::strtoul(e, nullptr, 10)) : 0u;
+  }();
+  return s + offset;
+}
+
+bool diagnostics()
+{
+  static const bool on = std::getenv("SWN_ORACLE_DIAG") != nullptr;
+  return on;
+}
 
 constexpr int kIntSentinel = -987654;
 constexpr double kRealSentinel = -9.87654e300;
@@ -266,8 +286,25 @@ std::set<Index> interior_endpoints(const Outcome& o)
   return e;
 }
 
+void print_diagnostics(const Outcome& o)
+{
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  std::ostringstream os;
+  os << "[diag] " << (info ? std::string(info->test_suite_name()) + "." + info->name() : std::string("?"))
+     << " ok=" << o.ok << " lp_ran=" << o.rep.lp_ran << " lp_obj=" << o.rep.lp_objective
+     << " ends=" << o.rep.interior_endpoints << " labels:" << histogram(o.W, all_faces(*o.soup))
+     << " |G|=" << o.G.size() << " |B|=" << o.B.size();
+  double gmin = 1e300, gmax = 0, wlo = 1e300, whi = -1e300;
+  for(const auto& kv : o.g)
+    if(std::abs(kv.second) > 1e-9) { gmin = std::min(gmin, std::abs(kv.second)); gmax = std::max(gmax, std::abs(kv.second)); }
+  for(const auto& c : o.w) for(double v : c) if(std::isfinite(v)) { wlo = std::min(wlo, v); whi = std::max(whi, v); }
+  os << " |g| in [" << (gmax > 0 ? gmin : 0.) << ", " << gmax << "] w in [" << wlo << ", " << whi << "]";
+  std::cout << os.str() << std::endl;
+}
+
 void check_common(const Outcome& o)
 {
+  if(diagnostics()) print_diagnostics(o);
   ASSERT_TRUE(o.ok) << "surface_winding_numbers returned false: " << o.rep.error;
   EXPECT_TRUE(o.rep.success);
   EXPECT_TRUE(o.rep.error.empty()) << o.rep.error;
@@ -505,8 +542,8 @@ TYPED_TEST_SUITE(Oracles, Mesh_types, Mesh_names);
 
 TYPED_TEST(Oracles, GeneratorsProduceValidOrientedMeshes)
 {
-  const Soup disk = make_disk(kDiskN, 3), ann = make_annulus(kNr, kNt, 3), tor = make_torus(kNu, kNv, 3),
-             sph = make_uv_sphere(kLat, kLon, 3);
+  const Soup disk = make_disk(kDiskN, seed(3)), ann = make_annulus(kNr, kNt, seed(3)), tor = make_torus(kNu, kNv, seed(3)),
+             sph = make_uv_sphere(kLat, kLon, seed(3));
   EXPECT_GT(min_signed_xy_area(disk), 0.);
   EXPECT_GT(min_signed_xy_area(ann), 0.);
   EXPECT_GT(min_outward_ratio_sphere(sph), 0.5);
@@ -546,7 +583,7 @@ std::vector<Index> d_outside(const Soup& s)
 
 TYPED_TEST(Oracles, D1_ClosedCCWLoopOnDisk)
 {
-  auto m = make_mesh<TypeParam>(make_disk(kDiskN, 11));
+  auto m = make_mesh<TypeParam>(make_disk(kDiskN, seed(11)));
   Soup_chain c;
   add_loop(c, d_loop());
   Outcome o = run(*m, c);
@@ -564,7 +601,7 @@ TYPED_TEST(Oracles, D1_ClosedCCWLoopOnDisk)
 
 TYPED_TEST(Oracles, D1_RegularMeshNoJitter)
 {
-  auto m = make_mesh<TypeParam>(make_disk(kDiskN, 11, 0.0, false));
+  auto m = make_mesh<TypeParam>(make_disk(kDiskN, seed(11), 0.0, false));
   Soup_chain c;
   add_loop(c, d_loop());
   Outcome o = run(*m, c);
@@ -576,7 +613,7 @@ TYPED_TEST(Oracles, D1_RegularMeshNoJitter)
 
 TYPED_TEST(Oracles, D2_ReversedLoopOnDisk)
 {
-  auto m = make_mesh<TypeParam>(make_disk(kDiskN, 12));
+  auto m = make_mesh<TypeParam>(make_disk(kDiskN, seed(12)));
   Soup_chain c;
   add_loop(c, reversed(d_loop()));
   Outcome o = run(*m, c);
@@ -591,7 +628,7 @@ TYPED_TEST(Oracles, D2_ReversedLoopOnDisk)
 
 TYPED_TEST(Oracles, D3_LoopEnclosingMostOfTheDisk)
 {
-  auto m = make_mesh<TypeParam>(make_disk(kDiskN, 13));
+  auto m = make_mesh<TypeParam>(make_disk(kDiskN, seed(13)));
   Soup_chain c;
   add_loop(c, disk_rect_loop(kDiskN, 2, 2, 18, 18));   // 256 of 400 cells
   Outcome o = run(*m, c);
@@ -637,7 +674,7 @@ TYPED_TEST(Oracles, D5_LoopWithThreeEdgeGap) { disk_gap_case<TypeParam>(3, 15); 
 
 TYPED_TEST(Oracles, D6_ChordBoundaryToBoundary)
 {
-  auto m = make_mesh<TypeParam>(make_disk(kDiskN, 16));
+  auto m = make_mesh<TypeParam>(make_disk(kDiskN, seed(16)));
   Soup_chain c;
   add_path(c, disk_vertical_path(kDiskN, 10, 0, kDiskN));   // going up at x = 1/2
   Outcome o = run(*m, c);
@@ -656,7 +693,7 @@ TYPED_TEST(Oracles, D6_ChordBoundaryToBoundary)
 
 TYPED_TEST(Oracles, D6_ChordDownwardsAndOffCentre)
 {
-  auto m = make_mesh<TypeParam>(make_disk(kDiskN, 17));
+  auto m = make_mesh<TypeParam>(make_disk(kDiskN, seed(17)));
   Soup_chain c;
   add_path(c, disk_vertical_path(kDiskN, 6, kDiskN, 0));   // going down at x = 0.3: left is x > 0.3
   Outcome o = run(*m, c);
@@ -669,7 +706,7 @@ TYPED_TEST(Oracles, D6_ChordDownwardsAndOffCentre)
 
 TYPED_TEST(Oracles, D7_ChordWithTwoEdgeGap)
 {
-  auto m = make_mesh<TypeParam>(make_disk(kDiskN, 18));
+  auto m = make_mesh<TypeParam>(make_disk(kDiskN, seed(18)));
   auto parts = path_with_gap(disk_vertical_path(kDiskN, 10, 0, kDiskN), 9, 2);   // gap (10,9)-(10,11)
   Soup_chain c;
   add_path(c, parts.first);
@@ -733,7 +770,7 @@ std::unique_ptr<Built_mesh<TM>> torus(unsigned seed)
 
 TYPED_TEST(Oracles, T1_Meridian)
 {
-  auto m = torus<TypeParam>(21);
+  auto m = torus<TypeParam>(seed(21));
   const Soup_chain c = meridian(6);
   Outcome o = run(*m, c);
   check_common(o);
@@ -748,7 +785,7 @@ TYPED_TEST(Oracles, T1_Meridian)
 
 TYPED_TEST(Oracles, T1_MeridianRegularMesh)
 {
-  auto m = make_mesh<TypeParam>(make_torus(kNu, kNv, 22, 0.0, false));
+  auto m = make_mesh<TypeParam>(make_torus(kNu, kNv, seed(22), 0.0, false));
   const Soup_chain c = meridian(0);
   Outcome o = run(*m, c);
   check_common(o);
@@ -760,7 +797,7 @@ TYPED_TEST(Oracles, T1_MeridianRegularMesh)
 
 TYPED_TEST(Oracles, T2_MeridianAndLongitudeCrossing)
 {
-  auto m = torus<TypeParam>(23);
+  auto m = torus<TypeParam>(seed(23));
   const Soup_chain c = sum(meridian(6), longitude(3));   // cross at vertex (6,3)
   Outcome o = run(*m, c);
   check_common(o);
@@ -773,7 +810,7 @@ TYPED_TEST(Oracles, T2_MeridianAndLongitudeCrossing)
 
 TYPED_TEST(Oracles, T3_TwoParallelMeridiansEqualSpacing)
 {
-  auto m = torus<TypeParam>(24);
+  auto m = torus<TypeParam>(seed(24));
   const Soup_chain c = sum(meridian(0), meridian(12));
   Outcome o = run(*m, c);
   check_common(o);
@@ -785,7 +822,7 @@ TYPED_TEST(Oracles, T3_TwoParallelMeridiansEqualSpacing)
 
 TYPED_TEST(Oracles, T4_TwoParallelMeridiansUnequalSpacing)
 {
-  auto m = torus<TypeParam>(25);
+  auto m = torus<TypeParam>(seed(25));
   const Soup_chain c = sum(meridian(2), meridian(7));
   Outcome o = run(*m, c);
   check_common(o);
@@ -809,7 +846,7 @@ std::vector<Index> t_rest(const Soup& s, std::function<bool(double, double)> kee
 
 TYPED_TEST(Oracles, T5_TwoOppositeMeridians)
 {
-  auto m = torus<TypeParam>(26);
+  auto m = torus<TypeParam>(seed(26));
   const Soup_chain c = sum(meridian(3), meridian_down(10));
   Outcome o = run(*m, c);
   check_common(o);
@@ -835,7 +872,7 @@ std::vector<Index> t6_outside(const Soup& s, std::function<bool(double, double)>
 
 TYPED_TEST(Oracles, T6_ContractibleLoop)
 {
-  auto m = torus<TypeParam>(27);
+  auto m = torus<TypeParam>(seed(27));
   const Soup_chain c = torus_square(4, 3, 10, 8);
   Outcome o = run(*m, c);
   check_common(o);
@@ -851,7 +888,7 @@ TYPED_TEST(Oracles, T6_ContractibleLoop)
 
 TYPED_TEST(Oracles, T7_ContractibleLoopWithOneEdgeGap)
 {
-  auto m = torus<TypeParam>(28);
+  auto m = torus<TypeParam>(seed(28));
   Soup_chain c;
   add_path(c, loop_with_gap(torus_rect_loop(kNu, kNv, 4, 3, 10, 8), 2, 1));   // gap (6,3)-(7,3)
   Outcome o = run(*m, c);
@@ -865,7 +902,7 @@ TYPED_TEST(Oracles, T7_ContractibleLoopWithOneEdgeGap)
 
 TYPED_TEST(Oracles, T8_MeridianWithTwoEdgeGap)
 {
-  auto m = torus<TypeParam>(29);
+  auto m = torus<TypeParam>(seed(29));
   const Soup_chain c = broken_meridian(6, 4, 2);   // gap (6,4)-(6,6)
   Outcome o = run(*m, c);
   check_common(o);
@@ -878,7 +915,7 @@ TYPED_TEST(Oracles, T8_MeridianWithTwoEdgeGap)
 
 TYPED_TEST(Oracles, T9_TwoOppositeMeridiansWithGaps)
 {
-  auto m = torus<TypeParam>(30);
+  auto m = torus<TypeParam>(seed(30));
   const Soup_chain c = sum(broken_meridian(3, 2, 1), broken_meridian(10, 8, 1, true));
   Outcome o = run(*m, c);
   check_common(o);
@@ -890,7 +927,7 @@ TYPED_TEST(Oracles, T9_TwoOppositeMeridiansWithGaps)
 
 TYPED_TEST(Oracles, T10_TwoSameMeridiansWithGaps)
 {
-  auto m = torus<TypeParam>(31);
+  auto m = torus<TypeParam>(seed(31));
   const Soup_chain c = sum(broken_meridian(0, 3, 1), broken_meridian(12, 8, 1));
   Outcome o = run(*m, c);
   check_common(o);
@@ -903,7 +940,7 @@ TYPED_TEST(Oracles, T10_TwoSameMeridiansWithGaps)
 
 TYPED_TEST(Oracles, T11_MeridianWithMultiplicityTwo)
 {
-  auto m = torus<TypeParam>(32);
+  auto m = torus<TypeParam>(seed(32));
   const Soup_chain c = meridian(6, 2);
   Outcome o = run(*m, c);
   check_common(o);
@@ -933,7 +970,7 @@ std::vector<Index> t12_outside(const Soup& s)
 
 TYPED_TEST(Oracles, T12_BrokenMeridianPlusContractibleLoop)
 {
-  auto m = torus<TypeParam>(33);
+  auto m = torus<TypeParam>(seed(33));
   Outcome o = run(*m, t12_chain());
   check_common(o);
   expect_regions(o, t12_inside(m->soup), t12_outside(m->soup), +1, 1, 0);
@@ -970,7 +1007,7 @@ std::unique_ptr<Built_mesh<TM>> annulus(unsigned seed)
 
 TYPED_TEST(Oracles, A1_RadialArcInnerToOuter)
 {
-  auto m = annulus<TypeParam>(41);
+  auto m = annulus<TypeParam>(seed(41));
   const Soup_chain c = radial(0);
   Outcome o = run(*m, c);
   check_common(o);
@@ -984,7 +1021,7 @@ TYPED_TEST(Oracles, A1_RadialArcInnerToOuter)
 
 TYPED_TEST(Oracles, A2_CoreCircle)
 {
-  auto m = annulus<TypeParam>(42);
+  auto m = annulus<TypeParam>(seed(42));
   const Soup_chain c = core_circle();
   Outcome o = run(*m, c);
   check_common(o);
@@ -998,7 +1035,7 @@ TYPED_TEST(Oracles, A2_CoreCircle)
 
 TYPED_TEST(Oracles, A3_ArcCuttingOffACap)
 {
-  auto m = annulus<TypeParam>(43);
+  auto m = annulus<TypeParam>(seed(43));
   Soup_chain c;
   add_path(c, annulus_radial_path(kNr, kNt, 10, kNr, 6));       // inwards from the outer border
   add_path(c, annulus_circle_path(kNr, kNt, 6, 10, 16));         // CCW along k = 6
@@ -1017,7 +1054,7 @@ TYPED_TEST(Oracles, A3_ArcCuttingOffACap)
 
 TYPED_TEST(Oracles, A4_RadialArcWithTwoEdgeGap)
 {
-  auto m = annulus<TypeParam>(44);
+  auto m = annulus<TypeParam>(seed(44));
   auto parts = path_with_gap(annulus_radial_path(kNr, kNt, 0, 0, kNr), 3, 2);   // gap k = 3..5
   Soup_chain c;
   add_path(c, parts.first);
@@ -1032,7 +1069,7 @@ TYPED_TEST(Oracles, A4_RadialArcWithTwoEdgeGap)
 
 TYPED_TEST(Oracles, A5_TwoOppositeRadialArcs)
 {
-  auto m = annulus<TypeParam>(45);
+  auto m = annulus<TypeParam>(seed(45));
   const Soup_chain c = sum(radial(0), radial(12, kNr, 0));   // out at t = 0, back in at t = 12
   Outcome o = run(*m, c);
   check_common(o);
@@ -1047,7 +1084,7 @@ TYPED_TEST(Oracles, A5_TwoOppositeRadialArcs)
 
 TYPED_TEST(Oracles, A6_RadialArcPlusCoreCircleSharingAVertex)
 {
-  auto m = annulus<TypeParam>(46);
+  auto m = annulus<TypeParam>(seed(46));
   const Soup_chain c = sum(radial(0), core_circle(kNr / 2, 0));   // share vertex (4, 0)
   Outcome o = run(*m, c);
   check_common(o);
@@ -1063,7 +1100,7 @@ TYPED_TEST(Oracles, A6_RadialArcPlusCoreCircleSharingAVertex)
 
 TYPED_TEST(Oracles, Sphere_LatitudeLoop)
 {
-  auto m = make_mesh<TypeParam>(make_uv_sphere(kLat, kLon, 51));
+  auto m = make_mesh<TypeParam>(make_uv_sphere(kLat, kLon, seed(51)));
   Soup_chain c;
   add_loop(c, sphere_ring(kLat, kLon, 4));   // polar angle 60 deg: the cap is 25% of the area
   Outcome o = run(*m, c);
@@ -1080,7 +1117,7 @@ TYPED_TEST(Oracles, Sphere_LatitudeLoop)
 
 TYPED_TEST(Oracles, Sphere_BrokenLatitudeLoop)
 {
-  auto m = make_mesh<TypeParam>(make_uv_sphere(kLat, kLon, 52));
+  auto m = make_mesh<TypeParam>(make_uv_sphere(kLat, kLon, seed(52)));
   Soup_chain c;
   add_path(c, loop_with_gap(sphere_ring(kLat, kLon, 6), 5, 2));   // equator, gap q = 5..7
   Outcome o = run(*m, c);
@@ -1097,7 +1134,7 @@ TYPED_TEST(Oracles, Sphere_BrokenLatitudeLoop)
 TYPED_TEST(Oracles, TwoComponents_EachNormalizedIndependently)
 {
   const int n = 12;
-  const Soup s = combine(make_disk(n, 61), make_disk(n, 62), 2.0, 0, 0);
+  const Soup s = combine(make_disk(n, seed(61)), make_disk(n, seed(62)), 2.0, 0, 0);
   auto m = make_mesh<TypeParam>(s);
   const Index off = Index(n + 1) * Index(n + 1);
   Soup_chain c;
@@ -1120,7 +1157,7 @@ TYPED_TEST(Oracles, TwoComponents_EachNormalizedIndependently)
 
 TYPED_TEST(Oracles, TwoComponents_TorusAndDisk)
 {
-  const Soup s = combine(make_torus(kNu, kNv, 63), make_disk(10, 64), 3.0, 0, 0);
+  const Soup s = combine(make_torus(kNu, kNv, seed(63)), make_disk(10, seed(64)), 3.0, 0, 0);
   auto m = make_mesh<TypeParam>(s);
   const Index off = Index(kNu) * Index(kNv);
   Soup_chain c = meridian(6);
@@ -1138,6 +1175,31 @@ TYPED_TEST(Oracles, TwoComponents_TorusAndDisk)
   EXPECT_EQ(lt, 0);
   expect_regions(o, in1, out1, -1, -1, 0);
   expect_G(o, meridian(6));
+}
+
+TYPED_TEST(Oracles, TwoComponents_BrokenLoopsOnTwoTori)
+{
+  // two tori, each with a broken meridian and a contractible loop: endpoints, Hodge step and LP
+  // on a disconnected mesh.
+  const Soup s = combine(make_torus(kNu, kNv, seed(65)), make_torus(kNu, kNv, seed(66)), 4.0, 0, 0);
+  auto m = make_mesh<TypeParam>(s);
+  const Index off = Index(kNu) * Index(kNv);
+  const Soup_chain c0 = t12_chain();
+  Soup_chain c1;   // on the second torus: reversed, so its inside is -1
+  for(const auto& kv : scaled(t12_chain(), -1)) c1[{kv.first.first + off, kv.first.second + off}] = kv.second;
+  Outcome o = run(*m, sum(c0, c1));
+  check_common(o);
+  auto in0 = select(m->soup, [](double x, double y, int k) { return k == 0 && in_rect(x, y, 8, 3, 14, 8); });
+  auto out0 = select(m->soup, [](double x, double y, int k) { return k == 0 && !in_rect(x, y, 8, 3, 14, 8) && x > 3 && x < kNu - 3; });
+  auto in1 = select(m->soup, [](double x, double y, int k) { return k == 1 && in_rect(x, y, 8, 3, 14, 8); });
+  auto out1 = select(m->soup, [](double x, double y, int k) { return k == 1 && !in_rect(x, y, 8, 3, 14, 8) && x > 3 && x < kNu - 3; });
+  expect_regions(o, in0, out0, +1, 1, 0);
+  expect_regions(o, in1, out1, -1, -1, 0);
+  Soup_chain G1;
+  for(const auto& kv : scaled(meridian(0), -1)) G1[{kv.first.first + off, kv.first.second + off}] = kv.second;
+  expect_G(o, sum(meridian(0), G1));
+  EXPECT_EQ(o.rep.interior_endpoints, 4u);
+  EXPECT_TRUE(o.rep.lp_ran);
 }
 
 // ==========================================================================================
@@ -1166,7 +1228,7 @@ std::vector<Index> concat(std::vector<Index> a, const std::vector<Index>& b)
 
 TYPED_TEST(Oracles, Metamorphic_ReversalNegatesWDifferencesAndG_Torus)
 {
-  auto m = torus<TypeParam>(71);
+  auto m = torus<TypeParam>(seed(71));
   const Soup_chain c = t12_chain();
   Outcome o = run(*m, c), r = run(*m, scaled(c, -1));
   check_common(o);
@@ -1180,7 +1242,7 @@ TYPED_TEST(Oracles, Metamorphic_ReversalNegatesWDifferencesAndG_Torus)
 
 TYPED_TEST(Oracles, Metamorphic_ReversalNegatesWDifferences_Disk)
 {
-  auto m = make_mesh<TypeParam>(make_disk(kDiskN, 72));
+  auto m = make_mesh<TypeParam>(make_disk(kDiskN, seed(72)));
   Soup_chain c;
   add_path(c, loop_with_gap(d_loop(), 4, 2));
   Outcome o = run(*m, c), r = run(*m, scaled(c, -1));
@@ -1199,7 +1261,7 @@ TYPED_TEST(Oracles, Metamorphic_ReversalNegatesWDifferences_Disk)
 
 TYPED_TEST(Oracles, Metamorphic_MultiplicityTwoDoubles_Disk)
 {
-  auto m = make_mesh<TypeParam>(make_disk(kDiskN, 73));
+  auto m = make_mesh<TypeParam>(make_disk(kDiskN, seed(73)));
   Soup_chain c;
   add_loop(c, d_loop(), 2);
   Outcome o = run(*m, c);
@@ -1212,7 +1274,7 @@ TYPED_TEST(Oracles, Metamorphic_MultiplicityTwoDoubles_Disk)
 
 TYPED_TEST(Oracles, Metamorphic_MultiplicityTwoDoubles_TorusLoop)
 {
-  auto m = torus<TypeParam>(74);
+  auto m = torus<TypeParam>(seed(74));
   const Soup_chain c = scaled(torus_square(4, 3, 10, 8), 2);
   Outcome o = run(*m, c);
   check_common(o);
@@ -1223,7 +1285,7 @@ TYPED_TEST(Oracles, Metamorphic_MultiplicityTwoDoubles_TorusLoop)
 
 TYPED_TEST(Oracles, Metamorphic_MultiplicityTwoDoubles_BrokenMeridian)
 {
-  auto m = torus<TypeParam>(75);
+  auto m = torus<TypeParam>(seed(75));
   const Soup_chain c1 = broken_meridian(6, 4, 2);
   Outcome o1 = run(*m, c1), o2 = run(*m, scaled(c1, 2));
   check_common(o1);
@@ -1252,26 +1314,26 @@ void similarity_case(const Soup& base, const Soup_chain& c, double scale)
 
 TYPED_TEST(Oracles, Metamorphic_SimilarityInvariance_TorusScaleUp)
 {
-  similarity_case<TypeParam>(make_torus(kNu, kNv, 76), t12_chain(), 1e3);
+  similarity_case<TypeParam>(make_torus(kNu, kNv, seed(76)), t12_chain(), 1e3);
 }
 TYPED_TEST(Oracles, Metamorphic_SimilarityInvariance_TorusScaleDown)
 {
-  similarity_case<TypeParam>(make_torus(kNu, kNv, 77), t12_chain(), 1e-3);
+  similarity_case<TypeParam>(make_torus(kNu, kNv, seed(77)), t12_chain(), 1e-3);
 }
 TYPED_TEST(Oracles, Metamorphic_SimilarityInvariance_DiskScaleUp)
 {
   Soup_chain c;
   add_path(c, loop_with_gap(d_loop(), 4, 1));
-  similarity_case<TypeParam>(make_disk(kDiskN, 78), c, 1e3);
+  similarity_case<TypeParam>(make_disk(kDiskN, seed(78)), c, 1e3);
 }
 TYPED_TEST(Oracles, Metamorphic_SimilarityInvariance_AnnulusScaleDown)
 {
-  similarity_case<TypeParam>(make_annulus(kNr, kNt, 79), sum(radial(0), core_circle()), 1e-3);
+  similarity_case<TypeParam>(make_annulus(kNr, kNt, seed(79)), sum(radial(0), core_circle()), 1e-3);
 }
 
 TYPED_TEST(Oracles, Metamorphic_FarBoundingLoopDoesNotChangeG_Torus)
 {
-  auto m = torus<TypeParam>(80);
+  auto m = torus<TypeParam>(seed(80));
   const Soup_chain c = broken_meridian(6, 4, 2);
   const Soup_chain far_loop = torus_square(14, 3, 19, 8);
   Outcome o = run(*m, c), f = run(*m, sum(c, far_loop));
@@ -1286,7 +1348,7 @@ TYPED_TEST(Oracles, Metamorphic_FarBoundingLoopDoesNotChangeG_Torus)
 
 TYPED_TEST(Oracles, Metamorphic_FarBoundingLoopDoesNotChangeG_Annulus)
 {
-  auto m = annulus<TypeParam>(81);
+  auto m = annulus<TypeParam>(seed(81));
   auto parts = path_with_gap(annulus_radial_path(kNr, kNt, 0, 0, kNr), 3, 2);
   Soup_chain c;
   add_path(c, parts.first);
@@ -1310,10 +1372,53 @@ TYPED_TEST(Oracles, Metamorphic_FarBoundingLoopDoesNotChangeG_Annulus)
   expect_regions(f, in, out, +1, 1, 0);
 }
 
+namespace {
+template <class TM>
+void permutation_case(const Soup& base, const Soup_chain& c, unsigned pseed)
+{
+  const Permuted_soup p = permuted(base, pseed);
+  Soup_chain pc;
+  for(const auto& kv : c) add_segment(pc, p.new_vertex[kv.first.first], p.new_vertex[kv.first.second], kv.second);
+  auto m0 = make_mesh<TM>(base);
+  auto m1 = make_mesh<TM>(p.soup);
+  Outcome o0 = run(*m0, c), o1 = run(*m1, pc);
+  check_common(o0);
+  check_common(o1);
+  std::size_t differing = 0;
+  for(Index f = 0; f < base.num_faces(); ++f)
+    if(o1.W[p.new_face[f]] != o0.W[f]) ++differing;
+  EXPECT_EQ(differing, 0u) << "labels changed when renumbering vertices and faces";
+  Soup_chain G1;   // G of the permuted run, in the original numbering
+  std::vector<Index> old_vertex(p.new_vertex.size());
+  for(Index i = 0; i < p.new_vertex.size(); ++i) old_vertex[p.new_vertex[i]] = i;
+  for(const auto& kv : o1.G) add_segment(G1, old_vertex[kv.first.first], old_vertex[kv.first.second], kv.second);
+  expect_G(o0, G1);
+}
+} // namespace
+
+TYPED_TEST(Oracles, Metamorphic_RenumberingInvariance_Torus)
+{
+  permutation_case<TypeParam>(make_torus(kNu, kNv, seed(83)), t12_chain(), 1);
+}
+TYPED_TEST(Oracles, Metamorphic_RenumberingInvariance_Disk)
+{
+  Soup_chain c;
+  add_path(c, loop_with_gap(d_loop(), 4, 2));
+  permutation_case<TypeParam>(make_disk(kDiskN, seed(84)), c, 2);
+}
+TYPED_TEST(Oracles, Metamorphic_RenumberingInvariance_Annulus)
+{
+  auto parts = path_with_gap(annulus_radial_path(kNr, kNt, 0, 0, kNr), 3, 2);
+  Soup_chain c = core_circle();
+  add_path(c, parts.first);
+  add_path(c, parts.second);
+  permutation_case<TypeParam>(make_annulus(kNr, kNt, seed(85)), c, 3);
+}
+
 TYPED_TEST(Oracles, Metamorphic_MeshStructuresAgree)
 {
   // Same soup through the other data structure gives identical labels and G.
-  const Soup s = make_torus(kNu, kNv, 82);
+  const Soup s = make_torus(kNu, kNv, seed(82));
   auto a = make_mesh<TypeParam>(s);
   auto b = make_mesh<SM>(s);
   const Soup_chain c = t12_chain();
@@ -1330,7 +1435,7 @@ TYPED_TEST(Oracles, Metamorphic_MeshStructuresAgree)
 
 TYPED_TEST(Oracles, SolverClassReusedForManyCurves)
 {
-  auto m = torus<TypeParam>(91);
+  auto m = torus<TypeParam>(seed(91));
   SWN::Surface_winding_numbers_solver<TypeParam> solver(m->tm);
   const std::vector<Soup_chain> curves = {meridian(6), torus_square(4, 3, 10, 8), t12_chain(),
                                           broken_meridian(6, 4, 2), meridian(6)};
@@ -1349,7 +1454,7 @@ TYPED_TEST(Oracles, SolverClassReusedForManyCurves)
 
 TYPED_TEST(Oracles, SolverClassOnDisk)
 {
-  auto m = make_mesh<TypeParam>(make_disk(kDiskN, 92));
+  auto m = make_mesh<TypeParam>(make_disk(kDiskN, seed(92)));
   SWN::Surface_winding_numbers_solver<TypeParam> solver(m->tm);
   Soup_chain c1, c2;
   add_loop(c1, d_loop());
@@ -1368,7 +1473,7 @@ TYPED_TEST(Oracles, SolverClassOnDisk)
 TYPED_TEST(Oracles, ChainHelpersMatchSoupChains)
 {
   using GT = boost::graph_traits<TypeParam>;
-  auto m = torus<TypeParam>(93);
+  auto m = torus<TypeParam>(seed(93));
   const std::vector<Index> loop = torus_rect_loop(kNu, kNv, 4, 3, 10, 8);
   Soup_chain expected;
   add_loop(expected, loop);
@@ -1431,7 +1536,7 @@ TYPED_TEST(Oracles, ChainHelpersMatchSoupChains)
 
 TEST(OraclesSurfaceMesh, NativePropertyMaps)
 {
-  auto m = make_mesh<SM>(make_disk(kDiskN, 101));
+  auto m = make_mesh<SM>(make_disk(kDiskN, seed(101)));
   SM& sm = m->tm;
   auto chain = sm.add_property_map<SM::Edge_index, int>("e:chain", 0).first;
   auto labels = sm.add_property_map<SM::Face_index, int>("f:W", kIntSentinel).first;
@@ -1468,7 +1573,7 @@ TEST(OraclesSurfaceMesh, NativePropertyMaps)
 TEST(OraclesSurfaceMesh, MeshWithGarbage)
 {
   // A Surface_mesh with removed-but-not-collected elements (index holes) must give the same result.
-  auto m = make_mesh<SM>(make_disk(kDiskN, 102));
+  auto m = make_mesh<SM>(make_disk(kDiskN, seed(102)));
   Soup_chain c;
   add_loop(c, d_loop());
   Outcome clean = run(*m, c);
@@ -1541,7 +1646,7 @@ TYPED_TEST(Oracles, BadInput_EmptyMesh)
 
 TYPED_TEST(Oracles, BadInput_ChainOnBorderEdge)
 {
-  auto m = make_mesh<TypeParam>(make_disk(kDiskN, 111));
+  auto m = make_mesh<TypeParam>(make_disk(kDiskN, seed(111)));
   Raw_maps<TypeParam> r(m->tm);
   Soup_chain c;
   add_loop(c, d_loop());
@@ -1552,7 +1657,7 @@ TYPED_TEST(Oracles, BadInput_ChainOnBorderEdge)
 
 TYPED_TEST(Oracles, BadInput_NaNCoordinate)
 {
-  auto m = make_mesh<TypeParam>(make_disk(kDiskN, 112));
+  auto m = make_mesh<TypeParam>(make_disk(kDiskN, seed(112)));
   const double nan = std::numeric_limits<double>::quiet_NaN();
   put(get(CGAL::vertex_point, m->tm), m->vertex[disk_vid(kDiskN, 7, 7)], Point_3(nan, 0.35, 0));
   Raw_maps<TypeParam> r(m->tm);
@@ -1564,7 +1669,7 @@ TYPED_TEST(Oracles, BadInput_NaNCoordinate)
 
 TYPED_TEST(Oracles, BadInput_InfiniteCoordinate)
 {
-  auto m = make_mesh<TypeParam>(make_torus(kNu, kNv, 113));
+  auto m = make_mesh<TypeParam>(make_torus(kNu, kNv, seed(113)));
   const double inf = std::numeric_limits<double>::infinity();
   put(get(CGAL::vertex_point, m->tm), m->vertex[torus_vid(kNu, kNv, 3, 3)], Point_3(0, inf, 0));
   Raw_maps<TypeParam> r(m->tm);
@@ -1576,7 +1681,7 @@ TYPED_TEST(Oracles, BadInput_ZeroAreaFace)
 {
   // regular disk, every cell split along (i,j)-(i+1,j+1): moving (7,7) onto the line x = 8/n
   // makes the triangle (7,7),(8,7),(8,8) exactly degenerate.
-  auto m = make_mesh<TypeParam>(make_disk(kDiskN, 114, 0.0, false));
+  auto m = make_mesh<TypeParam>(make_disk(kDiskN, seed(114), 0.0, false));
   const double h = 1.0 / kDiskN;
   put(get(CGAL::vertex_point, m->tm), m->vertex[disk_vid(kDiskN, 7, 7)], Point_3(8 * h, 7.5 * h, 0));
   Raw_maps<TypeParam> r(m->tm);
@@ -1588,7 +1693,7 @@ TYPED_TEST(Oracles, BadInput_ZeroAreaFace)
 
 TYPED_TEST(Oracles, BadInput_CoincidentVertices)
 {
-  auto m = make_mesh<TypeParam>(make_disk(kDiskN, 115));
+  auto m = make_mesh<TypeParam>(make_disk(kDiskN, seed(115)));
   const Point_3 p = get(CGAL::vertex_point, m->tm, m->vertex[disk_vid(kDiskN, 8, 7)]);
   put(get(CGAL::vertex_point, m->tm), m->vertex[disk_vid(kDiskN, 7, 7)], p);
   Raw_maps<TypeParam> r(m->tm);
@@ -1600,7 +1705,7 @@ TYPED_TEST(Oracles, BadInput_CoincidentVertices)
 
 TYPED_TEST(Oracles, BadInput_SolverClassReportsError)
 {
-  auto m = make_mesh<TypeParam>(make_disk(kDiskN, 116));
+  auto m = make_mesh<TypeParam>(make_disk(kDiskN, seed(116)));
   Raw_maps<TypeParam> r(m->tm);
   Soup_chain c;
   add_segment(c, disk_vid(kDiskN, 0, 3), disk_vid(kDiskN, 0, 4));   // left border edge
@@ -1610,4 +1715,100 @@ TYPED_TEST(Oracles, BadInput_SolverClassReportsError)
   EXPECT_FALSE(ok);
   EXPECT_FALSE(r.rep.error.empty());
   EXPECT_TRUE(r.outputs_untouched());
+}
+
+// ==========================================================================================
+// Self-tests of the harness: the checks above must be able to fail.
+// ==========================================================================================
+
+namespace {
+// Runs f with gtest's failure reporting intercepted; true iff some failure message contains `what`.
+template <class F>
+bool fails_with(F f, const std::string& what)
+{
+  ::testing::TestPartResultArray results;
+  {
+    ::testing::ScopedFakeTestPartResultReporter reporter(
+        ::testing::ScopedFakeTestPartResultReporter::INTERCEPT_ONLY_CURRENT_THREAD, &results);
+    f();
+  }
+  for(int i = 0; i < results.size(); ++i)
+    if(std::string(results.GetTestPartResult(i).message()).find(what) != std::string::npos) return true;
+  return false;
+}
+} // namespace
+
+TEST(OraclesHarness, SoupChainRoundTripThroughMeshEdges)
+{
+  // set_chain (soup -> mesh, relative to the reference halfedges) and Built_mesh::key (mesh ->
+  // soup) are inverse, on both data structures, for both orientations of every edge.
+  auto check = [](auto& m) {
+    Soup_chain c;
+    add_loop(c, torus_rect_loop(kNu, kNv, 4, 3, 10, 8));
+    add_loop(c, reversed(torus_meridian(kNu, kNv, 6)), 3);
+    std::unordered_map<typename std::decay_t<decltype(m)>::edge_descriptor, int> mp;
+    for(auto e : edges(m.tm)) mp[e] = 0;
+    set_chain(m, c, mp);
+    Soup_chain back;
+    for(auto e : edges(m.tm))
+      if(mp[e] != 0) { auto ks = m.key(e); back[ks.first] = mp[e] * ks.second; }
+    EXPECT_TRUE(back == c) << to_string(back) << "\nvs " << to_string(c);
+    // the reference halfedge agrees with the library's helper
+    std::unordered_map<typename std::decay_t<decltype(m)>::edge_descriptor, int> lib;
+    for(auto e : edges(m.tm)) lib[e] = 0;
+    auto pm = boost::make_assoc_property_map(lib);
+    std::vector<typename std::decay_t<decltype(m)>::halfedge_descriptor> hs;
+    for(const auto& kv : c)
+      for(int k = 0; k < std::abs(kv.second); ++k)
+        hs.push_back(kv.second > 0 ? m.halfedge_of(kv.first.first, kv.first.second)
+                                   : m.halfedge_of(kv.first.second, kv.first.first));
+    SWN::add_halfedges_to_chain(m.tm, hs, pm);
+    for(auto e : edges(m.tm)) EXPECT_EQ(lib[e], mp[e]);
+  };
+  auto a = make_mesh<SM>(make_torus(kNu, kNv, 5));
+  auto b = make_mesh<PH>(make_torus(kNu, kNv, 5));
+  check(*a);
+  check(*b);
+}
+
+TEST(OraclesHarness, ChecksDetectCorruptedOutcomes)
+{
+  auto m = make_mesh<SM>(make_disk(kDiskN, 7));
+  Soup_chain c;
+  add_loop(c, d_loop());
+  const Outcome good = run(*m, c);
+  check_common(good);
+  const auto in = d_inside(m->soup), out = d_outside(m->soup);
+
+  Outcome bad = good;   // a wrong label breaks B == JW
+  bad.W[in.front()] += 1;
+  EXPECT_TRUE(fails_with([&] { check_common(bad); }, "B != JW"));
+
+  bad = good;   // G that is not the rounding of g
+  bad.G[*good.all_edges.begin()] = 1;
+  EXPECT_TRUE(fails_with([&] { check_common(bad); }, "G != R(g)"));
+
+  bad = good;   // NaN away from endpoints
+  bad.w[0][0] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_TRUE(fails_with([&] { check_common(bad); }, "interior endpoint"));
+
+  bad = good;   // a B that is not closed
+  bad.B.erase(bad.B.begin());
+  EXPECT_TRUE(fails_with([&] { check_common(bad); }, "interior vertex"));
+
+  bad = good;   // normalization: shift all labels
+  for(int& l : bad.W) l += 5;
+  EXPECT_TRUE(fails_with([&] { check_common(bad); }, "largest-area label"));
+
+  bad = good;   // wrong difference / wrong absolute value
+  EXPECT_TRUE(fails_with([&] { expect_regions(bad, d_inside(m->soup), d_outside(m->soup), -1); }, "W(A)=1 W(B)=0"));
+  EXPECT_TRUE(fails_with([&] { expect_regions(bad, d_inside(m->soup), d_outside(m->soup), 1, 2, 1); }, "absolute label"));
+
+  bad = good;   // B = chain - G on curve edges
+  bad.G = c;
+  EXPECT_TRUE(fails_with([&] { check_closed_decomposition(bad); }, "chain - G"));
+
+  bad = good;   // w not two-valued
+  bad.w[in.front()][0] += 1e-3;
+  EXPECT_TRUE(fails_with([&] { expect_w_two_valued(bad, d_inside(m->soup), d_outside(m->soup), 1.0, kTolW); }, "w not constant on region A"));
 }
