@@ -84,8 +84,7 @@ struct Solve_report
   /// \name Timings
   /// @{
 
-  /// seconds spent in each step (setup, first jump Laplace solve, Hodge projection, residual, second
-  /// solve, labels) and in total
+  /// seconds spent in each step (setup, jump Laplace, Hodge, residual, second solve, labels) and in total
   double time_setup = 0, time_jump_laplace = 0, time_hodge = 0, time_residual = 0,
          time_second_solve = 0, time_labels = 0, time_total = 0;
   /// @}
