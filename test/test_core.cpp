@@ -275,37 +275,28 @@ TEST(LinearProgramTraits, StatusAndDuplicates)
 namespace {
 // The authors' formulation of Eq. 11 (slack z >= |J| on every arc, 0 <= Gamma J <= Gamma^2), solved
 // with GLPK: an independent formulation whose optimum must equal ours.
-double reference_residual_objective(const SI::Mesh_tables& t, const std::vector<double>& s, const std::vector<double>& chain, double eps)
+double reference_residual_objective(const SI::Mesh_tables& t, const SWN::Residual_problem& P, const std::vector<double>& chain)
 {
-  double mean = 0;
-  for(const SI::Arc& a : t.arcs) mean += t.edge_length(a.edge);
-  mean /= double(t.arcs.size());
   SWN::GLPK_linear_program_traits lp;
-  const std::size_t na = t.arcs.size();
+  const std::size_t na = P.number_of_arcs();
   lp.resize(t.nf + na, 4 * na);
   std::size_t row = 0;
   for(std::size_t a = 0; a < na; ++a)
   {
-    const SI::Arc& arc = t.arcs[a];
-    const std::size_t L = arc.left_side / 3, R = arc.right_side / 3, z = t.nf + a;
-    const double G = chain[arc.edge];
+    const std::size_t L = P.left[a], R = P.right[a], z = t.nf + a;
+    const double G = chain[t.arcs[a].edge], s = P.s[a];
     lp.set_variable_bounds(z, 0, lp.infinity());
-    lp.set_q(z, (G != 0 ? eps : 1.) * t.edge_length(arc.edge) / mean);
-    lp.set_A(row, L, 1); lp.set_A(row, R, -1); lp.set_A(row, z, -1); lp.set_u(row++, -s[a]);   // J <= z
-    lp.set_A(row, L, 1); lp.set_A(row, R, -1); lp.set_A(row, z, 1); lp.set_l(row++, -s[a]);    // -z <= J
-    lp.set_A(row, L, G); lp.set_A(row, R, -G); lp.set_l(row, -G * s[a]); lp.set_u(row++, G * G - G * s[a]);
+    lp.set_q(z, P.cost[a]);
+    lp.set_A(row, L, 1); lp.set_A(row, R, -1); lp.set_A(row, z, -1); lp.set_u(row++, -s);   // J <= z
+    lp.set_A(row, L, 1); lp.set_A(row, R, -1); lp.set_A(row, z, 1); lp.set_l(row++, -s);    // -z <= J
+    lp.set_A(row, L, G); lp.set_A(row, R, -G); lp.set_l(row, -G * s); lp.set_u(row++, G * G - G * s);
     ++row;   // the reference's trivial row
   }
   std::vector<double> x;
   EXPECT_EQ(lp.solve(std::back_inserter(x)), SWN::LP_status::OPTIMAL);
-  double obj = 0;
-  for(std::size_t a = 0; a < na; ++a)
-  {
-    const SI::Arc& arc = t.arcs[a];
-    const double J = s[a] + x[arc.left_side / 3] - x[arc.right_side / 3];
-    obj += (chain[arc.edge] != 0 ? eps : 1.) * t.edge_length(arc.edge) / mean * std::abs(J);
-  }
-  return obj;
+  x.resize(t.nf);
+  EXPECT_LT(P.max_violation(x), 1e-7);
+  return P.objective(x);
 }
 } // namespace
 
@@ -333,23 +324,21 @@ TEST(ResidualFunction, OptimumSatisfiesConstraintsAndMatchesTheAuthorsFormulatio
   const std::vector<double> star = SI::edge_hodge_star(t, w);
   B.assemble(t, star);
   const std::vector<double> v0 = SI::local_integration(t, B.harmonic_part(SI::darboux_derivative(t, u, endpoint)));
-  std::vector<double> s(t.arcs.size());
-  for(std::size_t k = 0; k < t.arcs.size(); ++k) s[k] = 0.5 * (SI::corner_jump_at(t, v0, k, 0) + SI::corner_jump_at(t, v0, k, 1));
+  const SWN::Residual_problem P = SI::residual_problem(t, v0, chain, 0.01);
   SWN::GLPK_linear_program_traits lp;
   double objective = 0;
   std::size_t nvar = 0, nrow = 0;
-  const std::vector<double> sigma = SI::residual_function(t, s, chain, 0.01, lp, objective, nvar, nrow);
-  for(std::size_t k = 0; k < t.arcs.size(); ++k)
+  const std::vector<double> sigma = SI::residual_function(P, lp, objective, nvar, nrow);
+  for(std::size_t k = 0; k < P.number_of_arcs(); ++k)
   {
-    const SI::Arc& arc = t.arcs[k];
-    const double G = chain[arc.edge];
-    if(G == 0) continue;
-    const double J = s[k] + sigma[arc.left_side / 3] - sigma[arc.right_side / 3];
+    const double G = chain[t.arcs[k].edge];
+    if(G == 0) { EXPECT_FALSE(P.is_bounded(k)); continue; }
+    const double J = P.jump(sigma, k);
     EXPECT_GE(J / G, -1e-7);
     EXPECT_LE(J / G, 1 + 1e-7);
   }
   EXPECT_GT(objective, 0.);
-  EXPECT_NEAR(objective, reference_residual_objective(t, s, chain, 0.01), 1e-7 * (1 + objective));
+  EXPECT_NEAR(objective, reference_residual_objective(t, P, chain), 1e-7 * (1 + objective));
 }
 
 TEST(Solver, ManyCurvesOnOneMeshMatchTheFreeFunction)

@@ -134,11 +134,8 @@ public:
 
       // v: residual function (Eq. 11)
       const std::vector<double> v0 = local_integration(m_, gamma);
-      std::vector<double> s(m_.arcs.size());
-      for(std::size_t a = 0; a < m_.arcs.size(); ++a)
-        s[a] = 0.5 * (corner_jump_at(m_, v0, a, 0) + corner_jump_at(m_, v0, a, 1));
-      const std::vector<double> sigma =
-        residual_function(m_, s, chain, epsilon, lp, rep.lp_objective, rep.lp_variables, rep.lp_rows);
+      const std::vector<double> sigma = residual_function(residual_problem(m_, v0, chain, epsilon), lp,
+                                                          rep.lp_objective, rep.lp_variables, rep.lp_rows);
       rep.lp_ran = true;
       r.v.resize(3 * m_.nf);
       for(std::size_t k = 0; k < 3 * m_.nf; ++k) r.v[k] = v0[k] + sigma[k / 3];

@@ -7,11 +7,15 @@
 #include <CGAL/Surface_winding_numbers/internal/derivatives.h>
 #include <CGAL/Surface_winding_numbers/internal/jump_laplace.h>
 #include <CGAL/Surface_winding_numbers/internal/mesh_tables.h>
+#include <CGAL/Surface_winding_numbers/Residual_problem.h>
+#include <CGAL/Surface_winding_numbers/Solve_report.h>
 
 #include <cmath>
 #include <iterator>
 #include <limits>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -32,44 +36,68 @@ inline std::vector<double> local_integration(const Mesh_tables& m, const std::ve
   return v;
 }
 
-// The residual linear program (paper Eq. 11), solved for one shift sigma per face:
-//   min  sum_{e in Gamma} eps l_e |J_e| + sum_{e not in Gamma} l_e |J_e|,   J_e = s_e + sigma_L - sigma_R
-//   s.t. 0 <= J_e / Gamma_e <= 1 on curve edges,
-// over interior edges (arcs); s_e is the jump of the locally integrated v0. The objective is the
-// paper's multiplied by eps (same argmin). On a curve edge the sign of J_e is known, so |J_e| is
-// linear there; elsewhere |J_e| = p_e + n_e with p_e, n_e >= 0. Lengths are in units of the mean
-// arc length (scale invariance of the LP's tolerances). The first face of each component has
-// sigma = 0 (the LP's constant null space). Returns sigma; writes the objective and LP size.
-template <class LP>
-std::vector<double> residual_function(const Mesh_tables& m, const std::vector<double>& s,
-                                      const std::vector<double>& chain, double epsilon, LP& lp,
-                                      double& objective, std::size_t& n_vars, std::size_t& n_rows)
+// Data of the residual problem (paper Eq. 11) over the interior edges (arcs): s_e is the jump of the
+// locally integrated v0 across the arc, averaged over the arc's two endpoints. The paper's objective
+// is multiplied by eps (same argmin): cost eps * l on curve edges, l elsewhere, with lengths in units
+// of the mean arc length (scale invariance of the solvers' tolerances). Bounds 0 <= J / Gamma <= 1 on
+// curve edges.
+inline Residual_problem residual_problem(const Mesh_tables& m, const std::vector<double>& v0,
+                                         const std::vector<double>& chain, double epsilon)
 {
   const std::size_t na = m.arcs.size();
+  const double inf = std::numeric_limits<double>::infinity();
   double mean_length = 0;
   for(const Arc& a : m.arcs) mean_length += m.edge_length(a.edge);
   mean_length = na > 0 ? mean_length / double(na) : 1.;
   if(!(mean_length > 0)) mean_length = 1.;
-
-  std::vector<std::size_t> slack(na, npos);
-  std::size_t n = m.nf;
-  for(std::size_t a = 0; a < na; ++a)
-    if(std::abs(chain[m.arcs[a].edge]) <= chain_tolerance) { slack[a] = n; n += 2; }
-  n_vars = n;
-  n_rows = na;
-
-  lp.resize(n, na);
-  lp.reserve_A(4 * na);
-  for(std::size_t c = 0; c < m.n_components; ++c)
-    lp.set_variable_bounds(m.component_first_face[c], 0., 0.);
-  std::vector<double> q(m.nf, 0.);
+  Residual_problem p;
+  p.number_of_faces = m.nf;
+  p.left.resize(na); p.right.resize(na); p.s.resize(na); p.cost.resize(na); p.lower.resize(na); p.upper.resize(na);
   for(std::size_t a = 0; a < na; ++a)
   {
     const Arc& arc = m.arcs[a];
-    const std::size_t L = arc.left_side / 3, R = arc.right_side / 3;
+    p.left[a] = arc.left_side / 3;
+    p.right[a] = arc.right_side / 3;
+    p.s[a] = 0.5 * (corner_jump_at(m, v0, a, 0) + corner_jump_at(m, v0, a, 1));
     const double len = m.edge_length(arc.edge) / mean_length;
     const double G = chain[arc.edge];
-    // row a: sigma_L - sigma_R (+ n - p)
+    if(std::abs(G) > chain_tolerance)
+    {
+      p.cost[a] = epsilon * len;
+      p.lower[a] = (std::min)(0., G);
+      p.upper[a] = (std::max)(0., G);
+    }
+    else
+    {
+      p.cost[a] = len;
+      p.lower[a] = -inf;
+      p.upper[a] = inf;
+    }
+  }
+  p.gauge_faces = m.component_first_face;
+  return p;
+}
+
+// Eq. 11 as a linear program for a model of SurfaceWindingNumbersLPTraits: one shift per face; on a
+// bounded arc the sign of J is known, so |J| is linear there; elsewhere |J| = p + n with p, n >= 0.
+// Gauge faces are fixed to 0.
+template <class LP>
+std::vector<double> solve_residual_with_lp(const Residual_problem& P, LP& lp, std::size_t& n_vars, std::size_t& n_rows)
+{
+  const std::size_t na = P.number_of_arcs(), nf = P.number_of_faces;
+  std::vector<std::size_t> slack(na, npos);
+  std::size_t n = nf;
+  for(std::size_t a = 0; a < na; ++a)
+    if(!P.is_bounded(a)) { slack[a] = n; n += 2; }
+  n_vars = n;
+  n_rows = na;
+  lp.resize(n, na);
+  lp.reserve_A(4 * na);
+  for(std::size_t f : P.gauge_faces) lp.set_variable_bounds(f, 0., 0.);
+  std::vector<double> q(nf, 0.);
+  for(std::size_t a = 0; a < na; ++a)
+  {
+    const std::size_t L = P.left[a], R = P.right[a];
     lp.set_A(a, L, 1.);
     lp.set_A(a, R, -1.);
     if(slack[a] != npos)
@@ -79,24 +107,22 @@ std::vector<double> residual_function(const Mesh_tables& m, const std::vector<do
       lp.set_A(a, nn, 1.);
       lp.set_variable_bounds(p, 0., LP::infinity());
       lp.set_variable_bounds(nn, 0., LP::infinity());
-      lp.set_q(p, len);
-      lp.set_q(nn, len);
-      lp.set_l(a, -s[a]);
-      lp.set_u(a, -s[a]);
+      lp.set_q(p, P.cost[a]);
+      lp.set_q(nn, P.cost[a]);
+      lp.set_l(a, -P.s[a]);
+      lp.set_u(a, -P.s[a]);
     }
     else
     {
-      // 0 <= J / G <= 1 and cost eps * len * |J| = eps * len * sign(G) * J
-      const double lo = G > 0 ? -s[a] : G - s[a];
-      const double hi = G > 0 ? G - s[a] : -s[a];
-      lp.set_l(a, lo);
-      lp.set_u(a, hi);
-      const double c = epsilon * len * (G > 0 ? 1. : -1.);
+      lp.set_l(a, P.lower[a] - P.s[a]);
+      lp.set_u(a, P.upper[a] - P.s[a]);
+      // the jump has the sign of the nonzero bound: |J| = sign * J
+      const double c = P.upper[a] > 0 ? P.cost[a] : -P.cost[a];
       q[L] += c;
       q[R] -= c;
     }
   }
-  for(std::size_t f = 0; f < m.nf; ++f)
+  for(std::size_t f = 0; f < nf; ++f)
     if(q[f] != 0) lp.set_q(f, q[f]);
 
   std::vector<double> x;
@@ -110,28 +136,37 @@ std::vector<double> residual_function(const Mesh_tables& m, const std::vector<do
     default: throw Solver_failure("the residual linear program (Eq. 11) could not be solved");
   }
   if(x.size() != n) throw Solver_failure("the LP solver returned a solution of the wrong size");
-  std::vector<double> sigma(x.begin(), x.begin() + std::ptrdiff_t(m.nf));
+  return std::vector<double>(x.begin(), x.begin() + std::ptrdiff_t(nf));
+}
 
-  // Check the optimum against the constraints before using it, and evaluate the objective.
-  objective = 0;
-  for(std::size_t a = 0; a < na; ++a)
+// Detects models of SurfaceWindingNumbersResidualSolver (a member solve_residual(problem, sigma)).
+template <class T, class = void>
+struct is_residual_solver : std::false_type {};
+template <class T>
+struct is_residual_solver<T, std::void_t<decltype(std::declval<T&>().solve_residual(
+                                std::declval<const Residual_problem&>(), std::declval<std::vector<double>&>()))>>
+  : std::true_type {};
+
+// The residual function (paper Sec. 3.4, Eq. 11): solves the residual problem with the given solver
+// (a residual solver, or LP traits), checks the optimum against the constraints, and returns sigma.
+template <class Solver>
+std::vector<double> residual_function(const Residual_problem& P, Solver& solver, double& objective,
+                                      std::size_t& n_vars, std::size_t& n_rows)
+{
+  std::vector<double> sigma;
+  if constexpr(is_residual_solver<Solver>::value)
   {
-    const Arc& arc = m.arcs[a];
-    const double J = s[a] + sigma[arc.left_side / 3] - sigma[arc.right_side / 3];
-    const double G = chain[arc.edge];
-    const double len = m.edge_length(arc.edge) / mean_length;
-    if(!std::isfinite(J)) throw Solver_failure("the LP solver returned non-finite values");
-    if(slack[a] == npos)
-    {
-      const double r = J / G;
-      if(r < -1e-6 || r > 1 + 1e-6)
-        throw Solver_failure("the LP solution violates 0 <= J/Gamma <= 1 on edge " + std::to_string(arc.edge) +
-                             " (J/Gamma = " + std::to_string(r) + ")");
-      objective += epsilon * len * std::abs(J);
-    }
-    else
-      objective += len * std::abs(J);
+    n_vars = P.number_of_faces;
+    n_rows = P.number_of_arcs();
+    if(!solver.solve_residual(P, sigma)) throw Solver_failure("the residual solver failed");
   }
+  else
+    sigma = solve_residual_with_lp(P, solver, n_vars, n_rows);
+  if(sigma.size() != P.number_of_faces) throw Solver_failure("the residual solver returned a solution of the wrong size");
+  const double violation = P.max_violation(sigma);
+  if(!(violation <= 1e-6))
+    throw Solver_failure("the residual solution violates 0 <= J/Gamma <= 1 by " + std::to_string(violation));
+  objective = P.objective(sigma);
   return sigma;
 }
 
