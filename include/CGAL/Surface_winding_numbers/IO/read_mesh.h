@@ -132,7 +132,7 @@ inline void check_finite_point(const std::array<double, 3>& p, const std::string
 }
 
 // Reasonable cap for reserve() calls driven by counts read from a file.
-inline std::size_t reserve_cap(long long n) { return static_cast<std::size_t>(std::min<long long>(std::max<long long>(n, 0), 1 << 22)); }
+inline std::size_t reserve_cap(long long n) { return static_cast<std::size_t>(std::min<long long>(std::max<long long>(n, 0), 1 << 16)); }
 
 inline std::string read_whole_stream(std::istream& is)
 {
@@ -536,7 +536,11 @@ inline void read_STL_soup(std::istream& is, const std::string& file, Triangle_so
         std::size_t nvert = 0;
         while(p < toks.size() && lower(toks[p].first) == "vertex")
         {
+          std::size_t vline = toks[p].second;
           ++p;
+          for(std::size_t c = 0; c < 3; ++c)
+            if(p + c >= toks.size() || toks[p + c].second != vline)
+              throw Input_error(file, vline, "'vertex' record with fewer than 3 coordinates");
           std::array<double, 3> v;
           v[0] = number(); v[1] = number(); v[2] = number();
           if(nvert < 3) tri[nvert] = v;
