@@ -30,14 +30,19 @@ A model of the concept `SurfaceWindingNumbersResidualSolver` solves it directly;
 */
 struct Residual_problem
 {
+  /// number of faces, i.e. of shifts `sigma` to compute
   std::size_t number_of_faces = 0;
+  /// face to the left of each arc
   std::vector<std::size_t> left, right;   ///< faces of each arc
   std::vector<double> s;                   ///< jump of the locally integrated residual across each arc
   std::vector<double> cost;                ///< positive weight of each arc
+  /// lower bound on the jump across each arc (-infinity when free)
   std::vector<double> lower, upper;        ///< bounds on the jump (+-infinity when free)
   std::vector<std::size_t> gauge_faces;    ///< one face per connected component
 
+  /// number of arcs (interior edges)
   std::size_t number_of_arcs() const { return left.size(); }
+  /// `true` if the jump across arc `a` has a finite bound (the arc is on the curve)
   bool is_bounded(std::size_t a) const { return std::isfinite(lower[a]) || std::isfinite(upper[a]); }
 
   /// jump of `s + sigma` across arc `a`
