@@ -430,3 +430,31 @@ TEST(Solver, FaceFilteredGraphSolvesOneComponent)
   EXPECT_EQ(hist[1], 2 * 4 * 5);
   EXPECT_EQ(hist[0], 2 * n * n - 2 * 4 * 5);
 }
+
+TEST(Solver, SparseSolversAgree)
+{
+  Mesh m;
+  const int nu = 20, nv = 10;
+  auto vs = torus_mesh(m, nu, nv);
+  auto chain = m.add_property_map<Mesh::Edge_index, int>("e:chain", 0).first;
+  std::vector<Vertex> a, loop;
+  for(int j = 0; j <= 7; ++j) a.push_back(vs[2 * nv + j]);   // open meridian piece
+  for(int i = 8; i <= 12; ++i) loop.push_back(vs[i * nv + 2]);
+  for(int j = 3; j <= 5; ++j) loop.push_back(vs[12 * nv + j]);
+  for(int i = 11; i >= 8; --i) loop.push_back(vs[i * nv + 5]);
+  for(int j = 4; j >= 2; --j) loop.push_back(vs[8 * nv + j]);
+  ASSERT_TRUE(SWN::add_vertex_polyline_to_chain(m, a, chain));
+  ASSERT_TRUE(SWN::add_vertex_polyline_to_chain(m, loop, chain));
+  auto l1 = m.add_property_map<Mesh::Face_index, int>("f:l1", 0).first;
+  auto l2 = m.add_property_map<Mesh::Face_index, int>("f:l2", 0).first;
+  auto w1 = m.add_property_map<Mesh::Halfedge_index, double>("h:w1", 0).first;
+  auto w2 = m.add_property_map<Mesh::Halfedge_index, double>("h:w2", 0).first;
+  ASSERT_TRUE(CGAL::surface_winding_numbers(m, chain, l1, SWN::parameters::winding_number_map(w1)));
+  SI::Eigen_LDLT_sparse_solver ldlt;
+  ASSERT_TRUE(CGAL::surface_winding_numbers(m, chain, l2, SWN::parameters::winding_number_map(w2).sparse_linear_solver(ldlt)));
+  int inside = 0;
+  for(auto f : faces(m)) { EXPECT_EQ(l1[f], l2[f]); inside += l1[f] == 1; }
+  EXPECT_EQ(inside, 2 * 4 * 3);
+  for(auto h : halfedges(m))
+    if(!is_border(h, m) && std::isfinite(w1[h])) EXPECT_NEAR(w1[h], w2[h], 1e-8);
+}

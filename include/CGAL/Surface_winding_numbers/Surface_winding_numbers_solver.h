@@ -14,6 +14,9 @@
 #include <CGAL/Default.h>
 #include <CGAL/Dynamic_property_map.h>
 #include <CGAL/Eigen_solver_traits.h>
+#ifdef CGAL_SWN_USE_CHOLMOD
+#include <Eigen/CholmodSupport>
+#endif
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -60,7 +63,14 @@ typedef No_linear_program_traits Default_linear_program_traits;
 #endif
 
 typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<CGAL::Eigen_sparse_matrix<double>::EigenType>>
-  Default_sparse_solver;
+  Eigen_LDLT_sparse_solver;
+#ifdef CGAL_SWN_USE_CHOLMOD
+typedef CGAL::Eigen_solver_traits<Eigen::CholmodDecomposition<CGAL::Eigen_sparse_matrix<double>::EigenType>>
+  CHOLMOD_sparse_solver;
+typedef CHOLMOD_sparse_solver Default_sparse_solver;
+#else
+typedef Eigen_LDLT_sparse_solver Default_sparse_solver;
+#endif
 
 } // namespace internal
 /// \endcond
@@ -81,7 +91,9 @@ The mesh must not be modified while the solver is in use.
 \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
 \tparam SparseLinearSolver a model of `SparseLinearAlgebraWithFactorTraits_d` for symmetric positive
         definite systems; its instances are default-constructed (one per factorization).
-        Default: `CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<CGAL::Eigen_sparse_matrix<double>::%EigenType> >`.
+        Default: `CGAL::Eigen_solver_traits<Eigen::CholmodDecomposition<CGAL::Eigen_sparse_matrix<double>::%EigenType> >`
+        when the package is built with CHOLMOD (`CGAL_SWN_USE_CHOLMOD`), otherwise
+        `CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<CGAL::Eigen_sparse_matrix<double>::%EigenType> >`.
 */
 template <class TriangleMesh, class SparseLinearSolver = CGAL::Default>
 class Surface_winding_numbers_solver
