@@ -103,13 +103,30 @@ struct Cut_result
   std::vector<std::size_t> point_vertex;
   /// true if the cut inserted vertices
   bool cut = false;
+  /// \name Statistics
+  /// @{
+
+  /// vertices/faces of the input mesh
   std::size_t input_vertices = 0, input_faces = 0;
+  /// @}
+  /// \name Conforming cut
+  /// @{
+
   /// vertices/faces added by the conforming cut
   std::size_t cut_new_vertices = 0, cut_new_faces = 0;
+  /// @}
+  /// \name After the cut
+  /// @{
+
   /// vertices/faces after the cut, before the short-piece refinement
   std::size_t vertices_after_cut = 0, faces_after_cut = 0;
+  /// @}
+  /// \name Short-piece refinement
+  /// @{
+
   /// vertices/faces added by the short-piece refinement, and the number of refined pieces
   std::size_t refine_new_vertices = 0, refine_new_faces = 0, refined_pieces = 0;
+  /// @}
   /// segments skipped because their two points coincide
   std::size_t skipped_segments = 0;
   /// number of segments that produced chain values

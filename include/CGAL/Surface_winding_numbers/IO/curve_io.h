@@ -100,7 +100,9 @@ struct Curve_segment
 */
 struct Curve_dual_pair
 {
+  /// the face the jump starts from (0-based)
   std::size_t face_a = 0;
+  /// the face the jump goes to, one higher than `face_a` (0-based)
   std::size_t face_b = 0;
   /// 1-based line of the `c` record
   std::size_t line = 0;
@@ -111,8 +113,11 @@ struct Curve_dual_pair
 */
 struct Curve_set
 {
+  /// the points of the curve, referred to by index from `segments`
   std::vector<Curve_point> points;
+  /// the directed segments of the curve
   std::vector<Curve_segment> segments;
+  /// the pairs of faces of the dual chains (`c` records)
   std::vector<Curve_dual_pair> dual_pairs;
   /// the file the curve came from, used in error messages
   std::string file;

@@ -104,9 +104,13 @@ struct Mesh_read_info
 */
 struct Triangle_soup
 {
+  /// vertex coordinates, in file order
   std::vector<std::array<double, 3> > points;
+  /// 1-based line of each vertex (0 for binary data)
   std::vector<std::size_t> point_lines;
+  /// the three 0-based vertex indices of each triangle, in file order
   std::vector<std::array<std::size_t, 3> > triangles;
+  /// 1-based line of each triangle (0 for binary data)
   std::vector<std::size_t> triangle_lines;
 };
 
@@ -937,36 +941,43 @@ inline void check_triangle_soup(const Triangle_soup& soup, const std::string& fi
                                             ", " + std::to_string(t[1]) + ", " + std::to_string(t[2]) + ")");
   }
 
-  // edges: at most two faces, traversed in opposite directions
-  struct Edge_rec { std::uint32_t f0, f1; std::uint8_t n; bool fwd0; };
-  std::unordered_map<std::uint64_t, Edge_rec> edges;
-  edges.reserve(nf * 3 / 2 + 16);
+  // outgoing halfedges per vertex (CSR, in face order): (target, face)
+  std::vector<std::uint32_t> start(nv + 1, 0);
+  for(const auto& t : soup.triangles)
+    for(int k = 0; k < 3; ++k) ++start[t[k] + 1];
+  for(std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
+  std::vector<std::pair<std::uint32_t, std::uint32_t> > out(3 * nf);
+  {
+    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+    for(std::size_t f = 0; f < nf; ++f)
+      for(int k = 0; k < 3; ++k)
+        out[fill[soup.triangles[f][k]]++] = {std::uint32_t(soup.triangles[f][(k + 1) % 3]), std::uint32_t(f)};
+  }
+  // edges: at most two faces, traversed in opposite directions; the problem is reported at the first face (in
+  // file order) that creates it
   for(std::size_t f = 0; f < nf; ++f)
   {
     const auto& t = soup.triangles[f];
     for(int k = 0; k < 3; ++k)
     {
-      std::size_t a = t[k], b = t[(k + 1) % 3];
-      bool fwd = a < b;
-      std::uint64_t key = (std::uint64_t(std::min(a, b)) << 32) | std::uint64_t(std::max(a, b));
-      auto it = edges.find(key);
-      if(it == edges.end())
+      const std::size_t a = t[k], b = t[(k + 1) % 3];
+      std::size_t same = nf, opp1 = nf, opp2 = nf;  // earlier faces with a->b, and with b->a
+      for(std::uint32_t i = start[a]; i < start[a + 1] && out[i].second < f; ++i)
+        if(out[i].first == b) { same = out[i].second; break; }
+      for(std::uint32_t i = start[b]; i < start[b + 1] && out[i].second < f; ++i)
+        if(out[i].first == a) { if(opp1 == nf) opp1 = out[i].second; else { opp2 = out[i].second; break; } }
+      if(opp2 != nf || (same != nf && opp1 != nf))
       {
-        edges.emplace(key, Edge_rec{std::uint32_t(f), 0, 1, fwd});
-        continue;
-      }
-      Edge_rec& r = it->second;
-      if(r.n >= 2)
+        std::size_t f0 = std::min(same, opp1), f1 = (opp2 != nf) ? opp2 : std::max(same, opp1);
         throw Input_error(file, fline(f), "non-manifold edge " + edge_name(std::min(a, b), std::max(a, b)) +
-                                              ": shared by more than two faces (faces " + std::to_string(r.f0) + ", " +
-                                              std::to_string(r.f1) + " and " + std::to_string(f) + ")");
-      if(r.fwd0 == fwd)
-        throw Input_error(file, fline(f), "faces " + std::to_string(r.f0) + " and " + std::to_string(f) +
+                                              ": shared by more than two faces (faces " + std::to_string(f0) + ", " +
+                                              std::to_string(f1) + " and " + std::to_string(f) + ")");
+      }
+      if(same != nf)
+        throw Input_error(file, fline(f), "faces " + std::to_string(same) + " and " + std::to_string(f) +
                                               " both traverse edge " + edge_name(a, b) +
                                               " in the same direction: the surface is not consistently oriented "
                                               "(or not orientable)");
-      r.f1 = std::uint32_t(f);
-      r.n = 2;
     }
   }
 
@@ -976,12 +987,24 @@ inline void check_triangle_soup(const Triangle_soup& soup, const std::string& fi
     const auto& t = soup.triangles[f];
     return 3 * f + (t[0] == v ? 0 : (t[1] == v ? 1 : 2));
   };
-  for(const auto& e : edges)
+  for(std::size_t f = 0; f < nf; ++f)
   {
-    if(e.second.n != 2) continue;
-    std::size_t a = std::size_t(e.first >> 32), b = std::size_t(e.first & 0xffffffffu);
-    uf.unite(local(e.second.f0, a), local(e.second.f1, a));
-    uf.unite(local(e.second.f0, b), local(e.second.f1, b));
+    const auto& t = soup.triangles[f];
+    for(int k = 0; k < 3; ++k)
+    {
+      const std::size_t a = t[k], b = t[(k + 1) % 3];
+      for(std::uint32_t i = start[b]; i < start[b + 1]; ++i)
+        if(out[i].first == a)
+        {
+          std::size_t g = out[i].second;
+          if(g > f)
+          {
+            uf.unite(3 * f + k, local(g, a));
+            uf.unite(3 * f + (k + 1) % 3, local(g, b));
+          }
+          break;
+        }
+    }
   }
   const std::size_t none = std::size_t(-1);
   std::vector<std::size_t> root(nv, none);
@@ -1012,15 +1035,14 @@ inline void check_triangle_soup(const Triangle_soup& soup, const std::string& fi
     s += unref.size() > 5 ? ", ...)" : ")";
     info.warnings.push_back(s);
   }
-  std::vector<std::size_t> order(nv);
-  std::iota(order.begin(), order.end(), std::size_t(0));
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t i, std::size_t j) { return soup.points[i] < soup.points[j]; });
+  std::vector<std::pair<std::array<double, 3>, std::size_t> > order(nv);
+  for(std::size_t v = 0; v < nv; ++v) order[v] = {soup.points[v], v};
+  std::sort(order.begin(), order.end());
   std::size_t dup = 0, dup_a = 0, dup_b = 0;
   for(std::size_t k = 1; k < nv; ++k)
-    if(soup.points[order[k]] == soup.points[order[k - 1]])
+    if(order[k].first == order[k - 1].first)
     {
-      if(dup == 0) { dup_a = order[k - 1]; dup_b = order[k]; }
+      if(dup == 0) { dup_a = order[k - 1].second; dup_b = order[k].second; }
       ++dup;
     }
   info.duplicated_vertex_positions = dup;
