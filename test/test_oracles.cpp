@@ -723,6 +723,84 @@ TYPED_TEST(Oracles, D7_ChordWithTwoEdgeGap)
   EXPECT_FALSE(o.rep.lp_ran);
 }
 
+TYPED_TEST(Oracles, Disk_NestedLoops)
+{
+  auto m = make_mesh<TypeParam>(make_disk(kDiskN, seed(19)));
+  Soup_chain c;
+  add_loop(c, disk_rect_loop(kDiskN, 3, 3, 13, 13));
+  add_loop(c, disk_rect_loop(kDiskN, 6, 6, 10, 10));
+  Outcome o = run(*m, c);
+  check_common(o);
+  check_closed_decomposition(o);
+  auto inner = select(m->soup, [](double x, double y, int) { return in_rect(x, y, 6, 6, 10, 10); });
+  auto ring = select(m->soup, [](double x, double y, int) { return in_rect(x, y, 3, 3, 13, 13) && !in_rect(x, y, 6, 6, 10, 10); });
+  auto out = select(m->soup, [](double x, double y, int) { return !in_rect(x, y, 3, 3, 13, 13); });
+  expect_regions(o, inner, ring, +1, 2, 1);
+  expect_regions(o, ring, out, +1, 1, 0);
+  EXPECT_EQ(count_labels(o), 3u);
+  expect_G(o, {});
+  EXPECT_TRUE(o.B == c);
+}
+
+TYPED_TEST(Oracles, Disk_OverlappingOppositeLoopsCrossingAtVertices)
+{
+  auto m = make_mesh<TypeParam>(make_disk(kDiskN, seed(20)));
+  Soup_chain c;
+  add_loop(c, disk_rect_loop(kDiskN, 3, 3, 11, 11));             // CCW
+  add_loop(c, reversed(disk_rect_loop(kDiskN, 7, 7, 15, 15)));   // CW; crosses at (11,7) and (7,11)
+  Outcome o = run(*m, c);
+  check_common(o);
+  check_closed_decomposition(o);
+  auto inA = [](double x, double y) { return in_rect(x, y, 3, 3, 11, 11); };
+  auto inB = [](double x, double y) { return in_rect(x, y, 7, 7, 15, 15); };
+  auto onlyA = select(m->soup, [&](double x, double y, int) { return inA(x, y) && !inB(x, y); });
+  auto onlyB = select(m->soup, [&](double x, double y, int) { return inB(x, y) && !inA(x, y); });
+  auto both = select(m->soup, [&](double x, double y, int) { return inA(x, y) && inB(x, y); });
+  auto none = select(m->soup, [&](double x, double y, int) { return !inA(x, y) && !inB(x, y); });
+  expect_regions(o, onlyA, none, +1, 1, 0);
+  expect_regions(o, onlyB, none, -1, -1, 0);
+  expect_regions(o, both, none, 0, 0, 0);
+  EXPECT_EQ(count_labels(o), 3u);
+  expect_G(o, {});
+}
+
+TYPED_TEST(Oracles, Disk_LoopTouchingTheBorderAtAVertex)
+{
+  // diagonals (i,j)-(i+1,j+1) everywhere (jittered positions): the loop dips to the border
+  // vertex (9,0) through the edges (9,1)-(9,0) and (9,0)-(10,1).
+  auto m = make_mesh<TypeParam>(make_disk(kDiskN, seed(21), 0.2, false));
+  std::vector<Index> l;
+  for(int i = 6; i < 9; ++i) l.push_back(disk_vid(kDiskN, i, 1));
+  l.push_back(disk_vid(kDiskN, 9, 1));
+  l.push_back(disk_vid(kDiskN, 9, 0));
+  for(int i = 10; i < 12; ++i) l.push_back(disk_vid(kDiskN, i, 1));
+  for(int j = 1; j < 6; ++j) l.push_back(disk_vid(kDiskN, 12, j));
+  for(int i = 12; i > 6; --i) l.push_back(disk_vid(kDiskN, i, 6));
+  for(int j = 6; j > 1; --j) l.push_back(disk_vid(kDiskN, 6, j));
+  Soup_chain c;
+  add_loop(c, l);
+  ASSERT_TRUE(boundary(c).empty());
+  Outcome o = run(*m, c);
+  check_common(o);
+  check_closed_decomposition(o);
+  auto cell90 = [](double x, double y) { return x > 9 && x < 10 && y < 1; };
+  auto in = select(m->soup, [&](double x, double y, int) { return in_rect(x, y, 6, 1, 12, 6); });
+  auto out = select(m->soup, [&](double x, double y, int) { return !in_rect(x, y, 6, 1, 12, 6) && !cell90(x, y); });
+  expect_regions(o, in, out, +1, 1, 0);
+  EXPECT_EQ(count_labels(o), 2u);
+  expect_G(o, {});
+  EXPECT_TRUE(o.B == c);
+  EXPECT_EQ(o.rep.interior_endpoints, 0u);
+  // the triangle (9,0),(10,1),(9,1) is inside, (9,0),(10,0),(10,1) outside
+  for(Index f : select(m->soup, [&](double x, double y, int) { return cell90(x, y); }))
+  {
+    const Triangle& t = m->soup.triangles[f];
+    const bool has_91 = std::count(t.begin(), t.end(), disk_vid(kDiskN, 9, 1)) > 0;
+    EXPECT_EQ(o.W[f], has_91 ? 1 : 0);
+  }
+  expect_w_two_valued(o, in, out, 1.0, kTolW);
+}
+
 // ==========================================================================================
 // Torus (genus 1: LP path)
 // ==========================================================================================
