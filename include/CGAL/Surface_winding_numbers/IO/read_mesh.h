@@ -926,7 +926,7 @@ inline void check_triangle_soup(const Triangle_soup& soup, const std::string& fi
   auto vline = [&](std::size_t v) { return v < soup.point_lines.size() ? soup.point_lines[v] : 0; };
   if(nf == 0)
     throw Input_error(file, 0, nv == 0 ? "empty mesh (no vertices and no faces)" : "the mesh has no faces");
-  if(nv >= (std::size_t(1) << 32) || nf >= (std::size_t(1) << 31))
+  if(nv >= (std::size_t(1) << 32) || nf >= (std::size_t(1) << 30))
     throw Input_error(file, 0, "mesh too large");
 
   for(std::size_t f = 0; f < nf; ++f)

@@ -27,6 +27,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <system_error>
 #include <type_traits>
 #include <utility>
@@ -372,19 +373,19 @@ void write_w_obj(std::ostream& os, const CGAL::Surface_mesh<Point>& mesh, const 
      << "#     edges: " << mesh.number_of_edges() << "\n"
      << "#     faces: " << mesh.number_of_faces() << "\n"
      << "# texture coordinates: YES\n";
-  std::ostringstream num;
-  num.imbue(std::locale::classic());
-  num << std::setprecision(std::numeric_limits<double>::max_digits10);
-  auto fmt = [&](double x) {
-    num.str(std::string());
-    num << x;
-    return num.str();
+  // %.17g (max_digits10), locale independent
+  char buf[64];
+  auto fmt = [&buf](double x) {
+    auto r = std::to_chars(buf, buf + sizeof(buf), x, std::chars_format::general,
+                           std::numeric_limits<double>::max_digits10);
+    return std::string_view(buf, static_cast<std::size_t>(r.ptr - buf));
   };
   for(auto v : mesh.vertices())
   {
     const Point& p = mesh.point(v);
-    os << "v " << fmt(CGAL::to_double(p.x())) << ' ' << fmt(CGAL::to_double(p.y())) << ' '
-       << fmt(CGAL::to_double(p.z())) << '\n';
+    os << "v " << fmt(CGAL::to_double(p.x()));  // one fmt() per statement: they share a buffer
+    os << ' ' << fmt(CGAL::to_double(p.y()));
+    os << ' ' << fmt(CGAL::to_double(p.z())) << '\n';
   }
   for(auto f : mesh.faces())
   {
@@ -507,12 +508,14 @@ std::vector<std::vector<std::size_t> > chain_to_polylines(const CGAL::Surface_me
   \brief writes an integer edge chain as an OBJ curve file: `v` lines, then one `l` line per polyline of
   `chain_to_polylines()` (1-based; multiplicity kept: an edge with value 2 is traversed twice).
 
-  \param all_vertices if true (default) every mesh vertex is written, so that `l` indices are the mesh's
-  1-based vertex indices; otherwise only the vertices used by the chain are written, in increasing index order.
+  Coordinates are written in the shortest form that reads back exactly.
+  \param all_vertices if true every mesh vertex is written, so that `l` indices are the mesh's 1-based vertex
+  indices; if false (default) only the vertices used by the chain are written, in increasing mesh index order,
+  and a comment line `# mesh vertices: i1 i2 ...` gives their 0-based mesh indices.
 */
 template <class Point, class ChainMap>
 void write_chain_obj(std::ostream& os, const CGAL::Surface_mesh<Point>& mesh, const ChainMap& chain,
-                     bool all_vertices = true)
+                     bool all_vertices = false)
 {
   auto pieces = chain_to_polylines(mesh, chain);
   const std::size_t nv = mesh.number_of_vertices();
@@ -530,16 +533,18 @@ void write_chain_obj(std::ostream& os, const CGAL::Surface_mesh<Point>& mesh, co
   for(const auto& p : pieces) nedges += p.size() - 1;
   os << "# curve written by CGAL Surface_winding_numbers: " << pieces.size() << " polylines, " << nedges
      << " edges (with multiplicity)\n";
-  std::ostringstream num;
-  num.imbue(std::locale::classic());
-  num << std::setprecision(std::numeric_limits<double>::max_digits10);
+  if(!all_vertices)
+  {
+    os << "# mesh vertices:";
+    for(std::size_t v = 0; v < nv; ++v) if(index[v] != 0) os << ' ' << v;
+    os << '\n';
+  }
   for(auto v : mesh.vertices())
   {
     if(index[std::size_t(v)] == 0) continue;
     const Point& p = mesh.point(v);
-    num.str(std::string());
-    num << "v " << CGAL::to_double(p.x()) << ' ' << CGAL::to_double(p.y()) << ' ' << CGAL::to_double(p.z()) << '\n';
-    os << num.str();
+    os << "v " << internal::format_double(CGAL::to_double(p.x())) << ' ' << internal::format_double(CGAL::to_double(p.y()))
+       << ' ' << internal::format_double(CGAL::to_double(p.z())) << '\n';
   }
   for(const auto& p : pieces)
   {
@@ -555,7 +560,7 @@ void write_chain_obj(std::ostream& os, const CGAL::Surface_mesh<Point>& mesh, co
 */
 template <class Point, class ChainMap>
 void write_chain_obj(const std::string& path, const CGAL::Surface_mesh<Point>& mesh, const ChainMap& chain,
-                     bool all_vertices = true)
+                     bool all_vertices = false)
 {
   internal::write_to_path(path, [&](std::ostream& os) { write_chain_obj(os, mesh, chain, all_vertices); });
 }
