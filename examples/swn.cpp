@@ -43,7 +43,8 @@ static const char* usage =
   "                         completed.obj and summary.json to DIR (created; written atomically)\n"
   "  --epsilon X            relative cost of residual jumps across the curve (default 0.01)\n"
   "  --lp-solver NAME       residual linear program solver: glpk (default)\n"
-  "  --linear-solver NAME   sparse Cholesky solver: ldlt (Eigen SimplicialLDLT, default)\n"
+  "  --linear-solver NAME   sparse Cholesky solver: cholmod (SuiteSparse, the default when built with it)\n"
+  "                         or ldlt (Eigen SimplicialLDLT)\n"
   "  --quiet                print nothing but errors\n"
   "  --verbose              print every step with its timing to stderr\n"
   "  --help                 this text\n"
@@ -68,7 +69,12 @@ struct Usage_error : std::runtime_error
 
 struct Options
 {
-  std::string mesh, curve, output_dir, lp_solver = "glpk", linear_solver = "ldlt";
+  std::string mesh, curve, output_dir, lp_solver = "glpk";
+#ifdef CGAL_SWN_USE_CHOLMOD
+  std::string linear_solver = "cholmod";
+#else
+  std::string linear_solver = "ldlt";
+#endif
   double epsilon = 0.01;
   bool quiet = false, verbose = false, help = false;
 };
@@ -109,7 +115,12 @@ Options parse_arguments(int argc, char** argv)
   if(o.help) return o;
   if(o.mesh.empty()) throw Usage_error("no mesh file given");
   if(o.lp_solver != "glpk") throw Usage_error("unknown --lp-solver '" + o.lp_solver + "' (available: glpk)");
+#ifdef CGAL_SWN_USE_CHOLMOD
+  if(o.linear_solver != "ldlt" && o.linear_solver != "cholmod")
+    throw Usage_error("unknown --linear-solver '" + o.linear_solver + "' (available: cholmod, ldlt)");
+#else
   if(o.linear_solver != "ldlt") throw Usage_error("unknown --linear-solver '" + o.linear_solver + "' (available: ldlt)");
+#endif
   return o;
 }
 
@@ -180,14 +191,21 @@ int main(int argc, char** argv)
   auto g = mesh.add_property_map<Mesh::Edge_index, double>("e:g", 0.).first;
   auto B = mesh.add_property_map<Mesh::Edge_index, int>("e:bounding", 0).first;
   SWN::Solve_report report;
-  SWN::GLPK_linear_program_traits lp;
-  lp.set_verbose(false);
-  const bool ok = CGAL::surface_winding_numbers(
-    mesh, chain, labels,
-    SWN::parameters::winding_number_map(w, SWN::parameters::nonbounding_chain_map(G,
-    SWN::parameters::nonbounding_chain_real_map(g, SWN::parameters::bounding_chain_map(B,
-    SWN::parameters::epsilon(opt.epsilon, SWN::parameters::lp_solver(std::ref(lp),
-    SWN::parameters::report(std::ref(report)))))))).verbose(opt.verbose));
+  auto solve = [&](auto& lp, auto sparse_solver) {
+    return CGAL::surface_winding_numbers(
+      mesh, chain, labels,
+      SWN::parameters::winding_number_map(w, SWN::parameters::nonbounding_chain_map(G,
+      SWN::parameters::nonbounding_chain_real_map(g, SWN::parameters::bounding_chain_map(B,
+      SWN::parameters::epsilon(opt.epsilon, SWN::parameters::lp_solver(std::ref(lp),
+      SWN::parameters::report(std::ref(report))))))))
+        .verbose(opt.verbose).sparse_linear_solver(sparse_solver));
+  };
+  SWN::GLPK_linear_program_traits glpk;
+  bool ok = false;
+  if(opt.linear_solver == "ldlt") ok = solve(glpk, SWN::internal::Eigen_LDLT_sparse_solver());
+#ifdef CGAL_SWN_USE_CHOLMOD
+  else ok = solve(glpk, SWN::internal::CHOLMOD_sparse_solver());
+#endif
   if(!ok)
   {
     const bool bad_input = report.invalid_input;
