@@ -9,7 +9,8 @@
 #include <CGAL/Surface_winding_numbers/IO/conforming_cut.h>
 #include <CGAL/Surface_winding_numbers/IO/write_outputs.h>
 
-#include <CGAL/IO/PLY.h>  // independent reader for the PLY we write
+#include <CGAL/IO/OFF.h>  // independent readers: cross-checks of ours
+#include <CGAL/IO/PLY.h>
 
 #include <gtest/gtest.h>
 
@@ -361,6 +362,40 @@ TEST(ReadMesh, WrittenByOurWritersAndReadBackInEveryFormat)
   IO::read_mesh(d / "w.obj", b);
   expect_octa_order(a);
   expect_octa_order(b);
+}
+
+TEST(ReadMesh, AgreesWithCGALSoupReaders)
+{
+  // CGAL's soup readers keep the file order too: ours must give the same points and faces on OFF and PLY
+  Mesh bunny;
+  IO::read_mesh(demo + "double-torus.obj", bunny);
+  TempDir d;
+  {
+    std::ofstream off(d / "b.off");
+    ASSERT_TRUE(CGAL::IO::write_OFF(off, bunny, CGAL::parameters::stream_precision(17)));
+    std::ofstream ply(d / "b.ply", std::ios::binary);
+    ASSERT_TRUE(CGAL::IO::write_PLY(ply, bunny, CGAL::parameters::stream_precision(17)));
+  }
+  for(const char* name : {"b.off", "b.ply"})
+  {
+    std::vector<Point> points;
+    std::vector<std::vector<std::size_t> > polygons;
+    const std::string path = d / name;
+    ASSERT_TRUE(IO::mesh_file_format(name) == "off" ? CGAL::IO::read_OFF(path, points, polygons)
+                                                     : CGAL::IO::read_PLY(path, points, polygons));
+    Mesh m;
+    IO::read_mesh(path, m);
+    ASSERT_EQ(m.number_of_vertices(), points.size());
+    ASSERT_EQ(m.number_of_faces(), polygons.size());
+    for(VI v : m.vertices()) ASSERT_EQ(m.point(v), points[std::size_t(v)]);
+    for(FI f : m.faces())
+    {
+      auto t = triple(m, f);
+      ASSERT_EQ(std::vector<std::size_t>(t.begin(), t.end()), polygons[std::size_t(f)]);
+    }
+    // and the same as the original
+    for(FI f : m.faces()) ASSERT_EQ(triple(m, f), triple(bunny, f));
+  }
 }
 
 TEST(ReadMesh, UnreferencedAndDuplicatedVerticesAreReportedNotRenumbered)
@@ -1193,7 +1228,9 @@ TEST(Malformed, Corpus)
       EXPECT_EQ(e.line, expected_line) << what;
       EXPECT_NE(what.find(file), std::string::npos) << what;
       if(expected_line != 0)
+      {
         EXPECT_NE(what.find(file + ":" + std::to_string(expected_line) + ": "), std::string::npos) << what;
+      }
       EXPECT_NE(what.find(substring), std::string::npos) << "expected '" << substring << "' in: " << what;
       EXPECT_EQ(what.find('\n'), std::string::npos);
     }
@@ -1207,7 +1244,10 @@ TEST(Malformed, Corpus)
   for(const auto& entry : fs::directory_iterator(dir))
   {
     std::string name = entry.path().filename().string();
-    if(name != "MANIFEST") EXPECT_TRUE(listed.count(name)) << name << " not listed in MANIFEST";
+    if(name != "MANIFEST")
+    {
+      EXPECT_TRUE(listed.count(name)) << name << " not listed in MANIFEST";
+    }
   }
 }
 

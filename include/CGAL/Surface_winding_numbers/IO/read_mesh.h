@@ -1082,7 +1082,9 @@ void triangle_soup_to_mesh(const Triangle_soup& soup, CGAL::Surface_mesh<Point>&
   typedef typename Mesh::Face_index Face_index;
   internal::check_triangle_soup(soup, file, info);
   mesh.clear();
-  mesh.reserve(soup.points.size(), soup.triangles.size() * 3 / 2 + 3, soup.triangles.size());
+  typedef typename Mesh::size_type size_type;
+  mesh.reserve(static_cast<size_type>(soup.points.size()), static_cast<size_type>(soup.triangles.size() * 3 / 2 + 3),
+               static_cast<size_type>(soup.triangles.size()));
   for(const auto& p : soup.points)
     mesh.add_vertex(Point(p[0], p[1], p[2]));
   for(std::size_t f = 0; f < soup.triangles.size(); ++f)
