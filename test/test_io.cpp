@@ -617,6 +617,12 @@ TEST(CurveFiles, FormatsAndDetection)
   EXPECT_EQ(a.points[a.segments[0].a].element, 5u);
   EXPECT_EQ(a.points[a.segments[0].b].element, 6u);
 
+  // CRLF line ends, trailing blanks and a UTF-8 byte order mark are harmless
+  write_file(d / "crlf.txt", "\xEF\xBB\xBF#offset 0 \r\nv 5 \r\nv 6\t\r\nl 0 1 \r\n");
+  IO::Curve_set crlf = IO::read_curve_file(d / "crlf.txt", g);
+  ASSERT_EQ(crlf.segments.size(), 1u);
+  EXPECT_EQ(crlf.points[1].element, 6u);
+
   // forced format
   write_file(d / "f.txt", "5 6\n");
   EXPECT_EQ(IO::read_curve_file(d / "f.txt", g, IO::Curve_file_format::POLYLINES).segments.size(), 1u);
@@ -750,6 +756,18 @@ TEST(ConformingCut, ShortPieceRule)
   auto r3 = IO::conforming_cut(g, IO::read_curves(is3, "loop.txt", g));
   EXPECT_EQ(r3.refined_pieces, 0u);
   EXPECT_EQ(r3.mesh.number_of_vertices(), 16u);
+  // a piece along the mesh boundary then inside: 0->1 (boundary edge) ->5 (interior endpoint), n=2:
+  // 4 sub-edges each; splits of the boundary edge add one face, the others two
+  std::istringstream is5("# swn polylines\n0 1 5\n");
+  auto r5 = IO::conforming_cut(g, IO::read_curves(is5, "bd2.txt", g));
+  EXPECT_EQ(r5.refined_pieces, 1u);
+  EXPECT_EQ(r5.refine_new_vertices, 6u);
+  EXPECT_EQ(r5.refine_new_faces, 9u);
+  EXPECT_TRUE(r5.mesh.is_valid(false));
+  auto b5 = chain_boundary(r5.mesh, r5.chain);
+  EXPECT_EQ(b5[0], -1);
+  EXPECT_EQ(b5[5], 1);
+  EXPECT_EQ(count_nonzero(b5), 2u);
   // two edges 5->6->7 with an interior start: n=2 -> 4 sub-edges each (6 new vertices)
   std::istringstream is4("# swn polylines\n5 6 7\n");
   auto r4 = IO::conforming_cut(g, IO::read_curves(is4, "two.txt", g));
