@@ -181,6 +181,9 @@ int main(int argc, char** argv)
     return 2;
   }
 
+  // Progress lines on stderr for long runs, unless --quiet.
+  if(!opt.quiet && num_faces(cut.mesh) > 200000) opt.verbose = true;
+
   // Solve on the mesh the curve lives on.
   Mesh& mesh = cut.mesh;
   auto chain = mesh.add_property_map<Mesh::Edge_index, int>("e:swn_chain", 0).first;
@@ -256,7 +259,7 @@ int main(int argc, char** argv)
       j.key("solved_mesh").begin_object()
         .key("vertices").value(report.vertices).key("edges").value(report.edges).key("faces").value(report.faces)
         .key("components").value(report.components).key("genus").value(std::size_t(report.genus))
-        .key("border_edges").value(report.border_edges)
+        .key("border_edges").value(report.border_edges).key("border_loops").value(report.border_loops)
         .key("cut_new_vertices").value(cut.cut_new_vertices).key("refine_new_vertices").value(cut.refine_new_vertices)
         .key("clamped_cotan_weights").value(report.degenerate_weights)
         .end_object();

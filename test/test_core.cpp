@@ -118,6 +118,7 @@ TEST(MeshTables, TorusAndTwoComponents)
   EXPECT_EQ(t.component_euler_characteristic[1], 1);
   EXPECT_FALSE(t.all_components_disks_or_spheres());
   EXPECT_EQ(s.report().genus, 1);
+  EXPECT_EQ(s.report().border_loops, 1u);
 }
 
 TEST(CotanWeights, ValuesClampAndScaleInvariance)

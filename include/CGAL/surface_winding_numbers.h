@@ -59,7 +59,7 @@ connected component, the label covering the largest area is 0.
   \cgalParamNBegin{sparse_linear_solver}
     \cgalParamDescription{the solver type used for the symmetric positive definite systems (its instances are default-constructed)}
     \cgalParamType{a model of `SparseLinearAlgebraWithFactorTraits_d`}
-    \cgalParamDefault{`CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<CGAL::Eigen_sparse_matrix<double>::%EigenType> >`}
+    \cgalParamDefault{`CGAL::Eigen_solver_traits<Eigen::CholmodDecomposition<CGAL::Eigen_sparse_matrix<double>::%EigenType> >` when the package is built with CHOLMOD (`CGAL_SWN_USE_CHOLMOD`), `CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<CGAL::Eigen_sparse_matrix<double>::%EigenType> >` otherwise}
   \cgalParamNEnd
   \cgalParamNBegin{verbose}
     \cgalParamDescription{prints the steps and their timings to `std::cerr`}
@@ -92,8 +92,8 @@ connected component, the label covering the largest area is 0.
     \cgalParamDefault{`0.01`}
   \cgalParamNEnd
   \cgalParamNBegin{Surface_winding_numbers::parameters::lp_solver}
-    \cgalParamDescription{the solver of the residual linear program, passed with `std::ref()`}
-    \cgalParamType{a model of `SurfaceWindingNumbersLPTraits`}
+    \cgalParamDescription{the solver of the residual problem (Eq. 11), passed with `std::ref()`: either a direct residual solver, or the traits of a general linear program solver to which the problem is given as a linear program}
+    \cgalParamType{a model of `SurfaceWindingNumbersResidualSolver` or of `SurfaceWindingNumbersLPTraits`}
     \cgalParamDefault{`CGAL::Surface_winding_numbers::GLPK_linear_program_traits`}
     \cgalParamExtra{only used when a component of the mesh is neither a disk nor a sphere}
   \cgalParamNEnd

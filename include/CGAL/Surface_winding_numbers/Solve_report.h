@@ -52,6 +52,7 @@ struct Solve_report
   std::size_t vertices = 0, edges = 0, faces = 0;
   std::size_t components = 0;        ///< connected components of the mesh
   std::size_t border_edges = 0;      ///< edges with a single incident face
+  std::size_t border_loops = 0;      ///< closed loops of border edges (boundary components)
   int genus = 0;                     ///< sum of the genera of the components
   /// @}
   /// \name Curve

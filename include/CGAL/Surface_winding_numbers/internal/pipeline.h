@@ -178,8 +178,12 @@ public:
     rep.border_edges = 0;
     for(char b : m_.edge_on_border) rep.border_edges += b ? 1 : 0;
     rep.genus = 0;
+    rep.border_loops = 0;
     for(std::size_t c = 0; c < m_.n_components; ++c)
+    {
+      rep.border_loops += border_loops(c);
       rep.genus += int((2 - m_.component_euler_characteristic[c] - long(border_loops(c))) / 2);
+    }
     rep.degenerate_weights = clamped_weights_;
   }
 
