@@ -8,6 +8,20 @@
 // Conventions (section 1 of the notes): a chain value counts traversals along a -> b; W increases
 // by chain(e) when crossing e from its right to its left (the inside of a CCW loop is one higher);
 // per connected component, the label covering the largest area is 0.
+//
+// Every successful solve goes through check_common(): all outputs written; G == R(g) on every
+// edge; no G or B on border edges; B == JW (left minus right label) on interior edges, hence B
+// closed at interior vertices; w NaN exactly at the corners of interior endpoints;
+// report.interior_endpoints; largest-area label 0 in every component. Closed curves also go
+// through check_closed_decomposition(): B = chain - G on curve edges, 0 elsewhere.
+//
+// Groups: D* (disk), T* (torus), A* (annulus), Sphere_*, TwoComponents_*, Metamorphic_*
+// (reversal, multiplicity, similarity x1e3 / x1e-3, far loop, renumbering, data structures),
+// SolverClass*, ChainHelpers*, OraclesSurfaceMesh.* (native maps, garbage), BadInput_*,
+// OraclesHarness.* (the checks themselves can fail).
+//
+// Environment: SWN_ORACLE_SEED_OFFSET=k runs everything on other random meshes;
+// SWN_ORACLE_DIAG=1 prints one line of diagnostics per solve.
 
 #include <CGAL/surface_winding_numbers.h>
 
@@ -378,7 +392,9 @@ void check_common(const Outcome& o)
     for(const auto& la : ca.second) v.push_back({la.second, la.first});
     std::sort(v.rbegin(), v.rend());
     if(v.size() == 1 || v[0].first > 1.02 * v[1].first)
+    {
       EXPECT_EQ(v[0].second, 0) << "component " << ca.first << ": largest-area label is " << v[0].second;
+    }
   }
 }
 
@@ -415,8 +431,8 @@ void expect_regions(const Outcome& o, const std::vector<Index>& A, const std::ve
   ASSERT_TRUE(region_label(o, A, a)) << "(region A)";
   ASSERT_TRUE(region_label(o, B, b)) << "(region B)";
   EXPECT_EQ(a - b, diff) << "W(A)=" << a << " W(B)=" << b;
-  if(abs_A) EXPECT_EQ(a, *abs_A) << "absolute label of region A";
-  if(abs_B) EXPECT_EQ(b, *abs_B) << "absolute label of region B";
+  if(abs_A) { EXPECT_EQ(a, *abs_A) << "absolute label of region A"; }
+  if(abs_B) { EXPECT_EQ(b, *abs_B) << "absolute label of region B"; }
 }
 
 void expect_constant_W(const Outcome& o)
@@ -1645,7 +1661,7 @@ TEST(OraclesSurfaceMesh, NativePropertyMaps)
     EXPECT_EQ(B[e], chain[e]);
   }
   for(auto h : halfedges(sm))
-    if(!is_border(h, sm)) EXPECT_FALSE(w[h] == kRealSentinel);
+    if(!is_border(h, sm)) { EXPECT_FALSE(w[h] == kRealSentinel); }
 }
 
 TEST(OraclesSurfaceMesh, MeshWithGarbage)
