@@ -35,7 +35,11 @@ connected component, the label covering the largest area is 0.
 \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
 \tparam ChainMap a model of `ReadablePropertyMap` with key `boost::graph_traits<TriangleMesh>::%edge_descriptor`
         and an integer value type: the signed number of times the curves traverse the edge,
-        positive along `halfedge(e, tm)` (from its source to its target)
+        positive along `halfedge(e, tm)` (from its source to its target) for the descriptor `e` met while
+        iterating over `edges(tm)`. Beware: with CGAL 5.5's `Surface_mesh`, `halfedge(edge(h, tm), tm)` returns
+        `h` itself, whichever of the two halfedges `h` is, so `chain[edge(h)] += (halfedge(edge(h)) == h ? 1 : -1)`
+        is wrong; use `Surface_winding_numbers::add_halfedges_to_chain()` or compare with the halfedge of the
+        edge as met in `edges(tm)`.
 \tparam LabelMap a model of `WritablePropertyMap` with key
         `boost::graph_traits<TriangleMesh>::%face_descriptor` and an integer value type
 \tparam NamedParameters a sequence of named parameters

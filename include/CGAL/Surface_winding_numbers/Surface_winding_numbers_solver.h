@@ -10,6 +10,9 @@
 #ifdef CGAL_USE_GLPK
 #include <CGAL/Surface_winding_numbers/GLPK_linear_program_traits.h>
 #endif
+#ifdef CGAL_SWN_USE_LEMON
+#include <CGAL/Surface_winding_numbers/LEMON_residual_solver.h>
+#endif
 
 #include <CGAL/Default.h>
 #include <CGAL/Dynamic_property_map.h>
@@ -56,7 +59,9 @@ struct No_linear_program_traits
   }
 };
 
-#ifdef CGAL_USE_GLPK
+#if defined(CGAL_SWN_USE_LEMON)
+typedef LEMON_residual_solver Default_linear_program_traits;
+#elif defined(CGAL_USE_GLPK)
 typedef GLPK_linear_program_traits Default_linear_program_traits;
 #else
 typedef No_linear_program_traits Default_linear_program_traits;
@@ -276,6 +281,18 @@ private:
     return m;
   }
 
+  // writes per-edge values to the edge map given for `tag`, if one was given
+  template <class Tag, class NamedParameters, class Values>
+  void write_edge_values(const NamedParameters& np, Tag tag, const Values& values) const
+  {
+    if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, Tag>::value)
+    {
+      auto map = CGAL::parameters::get_parameter(np, tag);
+      typedef typename boost::property_traits<decltype(map)>::value_type V;
+      for(edge_descriptor e : edges(tm_)) put(map, e, static_cast<V>(values[get(eim_, e)]));
+    }
+  }
+
   template <class LabelMap, class NamedParameters>
   void write_outputs(const internal::Core_result& r, LabelMap& label_map, const NamedParameters& np) const
   {
@@ -285,24 +302,9 @@ private:
     typedef typename boost::property_traits<LabelMap>::value_type Label;
     for(face_descriptor f : faces(tm_)) put(label_map, f, static_cast<Label>(r.labels[get(fim_, f)]));
 
-    if constexpr(!is_default_parameter<NamedParameters, snp::nonbounding_chain_map_t>::value)
-    {
-      auto map = get_parameter(np, snp::nonbounding_chain_map);
-      typedef typename boost::property_traits<decltype(map)>::value_type V;
-      for(edge_descriptor e : edges(tm_)) put(map, e, static_cast<V>(r.G[get(eim_, e)]));
-    }
-    if constexpr(!is_default_parameter<NamedParameters, snp::nonbounding_chain_real_map_t>::value)
-    {
-      auto map = get_parameter(np, snp::nonbounding_chain_real_map);
-      typedef typename boost::property_traits<decltype(map)>::value_type V;
-      for(edge_descriptor e : edges(tm_)) put(map, e, static_cast<V>(r.g[get(eim_, e)]));
-    }
-    if constexpr(!is_default_parameter<NamedParameters, snp::bounding_chain_map_t>::value)
-    {
-      auto map = get_parameter(np, snp::bounding_chain_map);
-      typedef typename boost::property_traits<decltype(map)>::value_type V;
-      for(edge_descriptor e : edges(tm_)) put(map, e, static_cast<V>(r.bounding[get(eim_, e)]));
-    }
+    write_edge_values<snp::nonbounding_chain_map_t>(np, snp::nonbounding_chain_map, r.G);
+    write_edge_values<snp::nonbounding_chain_real_map_t>(np, snp::nonbounding_chain_real_map, r.g);
+    write_edge_values<snp::bounding_chain_map_t>(np, snp::bounding_chain_map, r.bounding);
     if constexpr(!is_default_parameter<NamedParameters, snp::winding_number_map_t>::value)
     {
       auto map = get_parameter(np, snp::winding_number_map);

@@ -111,23 +111,13 @@ public:
     weight_ = &weight;
     excluded_ = excluded;
     // components of the V* graph, to pin one vertex each
-    std::vector<std::size_t> parent(m.nv);
-    std::iota(parent.begin(), parent.end(), std::size_t(0));
-    auto find = [&](std::size_t x) {
-      while(parent[x] != x) { parent[x] = parent[parent[x]]; x = parent[x]; }
-      return x;
-    };
+    Union_find sets(m.nv);
     for(std::size_t s = 0; s < 3 * m.nf; ++s)
-    {
-      const std::size_t i = m.tail(s), j = m.head(s);
-      if(excluded[i] || excluded[j]) continue;
-      const std::size_t x = find(i), y = find(j);
-      if(x != y) parent[std::max(x, y)] = std::min(x, y);
-    }
+      if(!excluded[m.tail(s)] && !excluded[m.head(s)]) sets.unite(m.tail(s), m.head(s));
     dof_.assign(m.nv, npos);
     std::size_t n = 0;
     for(std::size_t v = 0; v < m.nv; ++v)
-      if(!excluded[v] && m.vertex_component[v] != npos && find(v) != v) dof_[v] = n++;   // roots are pinned
+      if(!excluded[v] && m.vertex_component[v] != npos && sets.find(v) != v) dof_[v] = n++;   // roots are pinned
     n_ = n;
     la_.reset(new LA());
     if(n == 0) return;

@@ -9,6 +9,7 @@
 
 #include <CGAL/Surface_winding_numbers/Solve_report.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -106,6 +107,25 @@ struct Mesh_tables
   }
 };
 
+// Disjoint sets over 0..n-1; the representative of a set is its smallest element.
+class Union_find
+{
+public:
+  explicit Union_find(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), std::size_t(0)); }
+  std::size_t find(std::size_t x)
+  {
+    while(parent_[x] != x) { parent_[x] = parent_[parent_[x]]; x = parent_[x]; }
+    return x;
+  }
+  void unite(std::size_t a, std::size_t b)
+  {
+    const std::size_t x = find(a), y = find(b);
+    if(x != y) parent_[std::max(x, y)] = std::min(x, y);
+  }
+private:
+  std::vector<std::size_t> parent_;
+};
+
 // Completes the tables from points, fv, fe, ev (and nv, nf, ne): orientation signs, incidences,
 // arcs, border flags, vertex corner lists and components. Throws Invalid_input on a side whose
 // endpoints do not match its edge.
@@ -168,31 +188,19 @@ inline void finalize_mesh_tables(Mesh_tables& m)
   for(std::size_t e = 0; e < m.ne; ++e)
     if(m.edge_on_border[e]) m.vertex_on_border[m.ev[2 * e]] = m.vertex_on_border[m.ev[2 * e + 1]] = 1;
 
-  // face components through arcs (union-find)
-  std::vector<std::size_t> parent(m.nf);
-  std::iota(parent.begin(), parent.end(), std::size_t(0));
-  auto find = [&](std::size_t x) {
-    while(parent[x] != x) { parent[x] = parent[parent[x]]; x = parent[x]; }
-    return x;
-  };
-  for(const Arc& a : m.arcs)
-  {
-    const std::size_t x = find(a.left_side / 3), y = find(a.right_side / 3);
-    if(x != y) parent[std::max(x, y)] = std::min(x, y);
-  }
-  // faces sharing only a vertex (or a nonmanifold edge) are also one component for labelling
+  // face components through arcs; faces sharing only a vertex (or a nonmanifold edge) are also one
+  // component for labelling
+  Union_find sets(m.nf);
+  for(const Arc& a : m.arcs) sets.unite(a.left_side / 3, a.right_side / 3);
   for(std::size_t v = 0; v < m.nv; ++v)
     for(std::size_t i = m.vertex_corner_begin[v] + 1; i < m.vertex_corner_begin[v + 1]; ++i)
-    {
-      const std::size_t x = find(m.vertex_corners[i] / 3), y = find(m.vertex_corners[m.vertex_corner_begin[v]] / 3);
-      if(x != y) parent[std::max(x, y)] = std::min(x, y);
-    }
+      sets.unite(m.vertex_corners[i] / 3, m.vertex_corners[m.vertex_corner_begin[v]] / 3);
   m.face_component.assign(m.nf, npos);
   m.component_first_face.clear();
   m.n_components = 0;
   for(std::size_t f = 0; f < m.nf; ++f)
   {
-    const std::size_t r = find(f);
+    const std::size_t r = sets.find(f);
     if(m.face_component[r] == npos)
     {
       m.face_component[r] = m.n_components++;
