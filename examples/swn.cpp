@@ -43,6 +43,8 @@ static const char* usage =
   "                         completed.obj and summary.json to DIR (created; written atomically)\n"
   "  --epsilon X            relative cost of residual jumps across the curve (default 0.01)\n"
   "  --lp-solver NAME       residual linear program solver: glpk (default)\n"
+  "  --reduced-residual     approximate the residual LP by the paper's reduced problem (Sec. 6): gaps\n"
+  "                         closed by shortest paths, one shift per region (faster, approximate)\n"
   "  --linear-solver NAME   sparse Cholesky solver: cholmod (SuiteSparse, the default when built with it)\n"
   "                         or ldlt (Eigen SimplicialLDLT)\n"
   "  --quiet                print nothing but errors\n"
@@ -76,7 +78,7 @@ struct Options
   std::string linear_solver = "ldlt";
 #endif
   double epsilon = 0.01;
-  bool quiet = false, verbose = false, help = false;
+  bool quiet = false, verbose = false, help = false, reduced_residual = false;
 };
 
 Options parse_arguments(int argc, char** argv)
@@ -100,6 +102,7 @@ Options parse_arguments(int argc, char** argv)
     else if(a == "--linear-solver") o.linear_solver = next();
     else if(a == "--quiet") o.quiet = true;
     else if(a == "--verbose") o.verbose = true;
+    else if(a == "--reduced-residual") o.reduced_residual = true;
     else if(a == "--epsilon")
     {
       const std::string v = next();
@@ -199,8 +202,9 @@ int main(int argc, char** argv)
       mesh, chain, labels,
       SWN::parameters::winding_number_map(w, SWN::parameters::nonbounding_chain_map(G,
       SWN::parameters::nonbounding_chain_real_map(g, SWN::parameters::bounding_chain_map(B,
-      SWN::parameters::epsilon(opt.epsilon, SWN::parameters::lp_solver(std::ref(lp),
-      SWN::parameters::report(std::ref(report))))))))
+      SWN::parameters::epsilon(opt.epsilon, SWN::parameters::use_reduced_residual(opt.reduced_residual,
+      SWN::parameters::lp_solver(std::ref(lp),
+      SWN::parameters::report(std::ref(report)))))))))
         .verbose(opt.verbose).sparse_linear_solver(sparse_solver));
   };
   SWN::GLPK_linear_program_traits glpk;
@@ -271,7 +275,7 @@ int main(int argc, char** argv)
         .key("epsilon").value(opt.epsilon)
         .key("homology_correction").value(report.homology_correction)
         .key("hodge_projection").value(report.hodge_projection)
-        .key("lp_ran").value(report.lp_ran)
+        .key("lp_ran").value(report.lp_ran).key("reduced_residual").value(report.reduced_residual)
         .key("lp_variables").value(report.lp_variables).key("lp_rows").value(report.lp_rows)
         .key("lp_objective").value(report.lp_objective)
         .key("lp_solver").value(opt.lp_solver).key("linear_solver").value(opt.linear_solver)

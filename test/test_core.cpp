@@ -459,3 +459,36 @@ TEST(Solver, SparseSolversAgree)
   for(auto h : halfedges(m))
     if(!is_border(h, m) && std::isfinite(w1[h])) EXPECT_NEAR(w1[h], w2[h], 1e-8);
 }
+
+TEST(ReducedResidual, AgreesWithTheExactResidualOnSeparatedCurves)
+{
+  // broken meridian + broken contractible loop, far apart: the reduced problem (Sec. 6) gives the
+  // same labels and the same G as Eq. 11, with far fewer LP variables
+  Mesh m;
+  const int nu = 24, nv = 12;
+  auto vs = torus_mesh(m, nu, nv);
+  auto chain = m.add_property_map<Mesh::Edge_index, int>("e:chain", 0).first;
+  std::vector<Vertex> a, b, loop;
+  for(int j = 0; j <= 4; ++j) a.push_back(vs[2 * nv + j]);
+  for(int j = 6; j <= nv; ++j) b.push_back(vs[2 * nv + j % nv]);
+  for(int i = 10; i <= 15; ++i) loop.push_back(vs[i * nv + 2]);
+  for(int j = 3; j <= 6; ++j) loop.push_back(vs[15 * nv + j]);
+  for(int i = 14; i >= 10; --i) loop.push_back(vs[i * nv + 6]);
+  for(int j = 5; j >= 3; --j) loop.push_back(vs[10 * nv + j]);   // one-edge gap left open
+  for(const auto& p : {a, b, loop}) ASSERT_TRUE(SWN::add_vertex_polyline_to_chain(m, p, chain));
+  auto l1 = m.add_property_map<Mesh::Face_index, int>("f:l1", 0).first;
+  auto l2 = m.add_property_map<Mesh::Face_index, int>("f:l2", 0).first;
+  auto G1 = m.add_property_map<Mesh::Edge_index, int>("e:G1", 0).first;
+  auto G2 = m.add_property_map<Mesh::Edge_index, int>("e:G2", 0).first;
+  SWN::Solve_report exact, reduced;
+  ASSERT_TRUE(CGAL::surface_winding_numbers(m, chain, l1, SWN::parameters::nonbounding_chain_map(G1, SWN::parameters::report(std::ref(exact)))));
+  ASSERT_TRUE(CGAL::surface_winding_numbers(m, chain, l2, SWN::parameters::nonbounding_chain_map(G2,
+                SWN::parameters::use_reduced_residual(true, SWN::parameters::report(std::ref(reduced)))))) << reduced.error;
+  EXPECT_TRUE(reduced.reduced_residual);
+  EXPECT_LT(reduced.lp_variables * 10, exact.lp_variables);
+  int inside = 0, nG = 0;
+  for(auto f : faces(m)) { EXPECT_EQ(l1[f], l2[f]); inside += l1[f] == 1; }
+  for(auto e : edges(m)) { EXPECT_EQ(G1[e], G2[e]); nG += G1[e] != 0; }
+  EXPECT_EQ(inside, 2 * 5 * 4);
+  EXPECT_EQ(nG, nv);
+}

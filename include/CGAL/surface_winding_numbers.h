@@ -101,6 +101,11 @@ connected component, the label covering the largest area is 0.
     \cgalParamDefault{`CGAL::Surface_winding_numbers::GLPK_linear_program_traits`}
     \cgalParamExtra{only used when a component of the mesh is neither a disk nor a sphere}
   \cgalParamNEnd
+  \cgalParamNBegin{Surface_winding_numbers::parameters::use_reduced_residual}
+    \cgalParamDescription{approximates the residual function by the reduced problem of the paper's Sec. 6: the gaps are closed by shortest paths (by length, over edges off the curve), and one shift per region between the completed curves is optimized (Eq. 11's costs, without its bounds); much smaller than Eq. 11, but periods of the residual around handles inside a region are ignored}
+    \cgalParamType{Boolean}
+    \cgalParamDefault{`false`}
+  \cgalParamNEnd
   \cgalParamNBegin{Surface_winding_numbers::parameters::report}
     \cgalParamDescription{receives what the solve did (sizes, topology, LP size and objective, timings) and, on failure, why}
     \cgalParamType{`std::reference_wrapper<CGAL::Surface_winding_numbers::Solve_report>`}

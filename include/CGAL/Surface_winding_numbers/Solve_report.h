@@ -66,6 +66,7 @@ struct Solve_report
 
   bool homology_correction = false;  ///< `false` when every component is a disk or a sphere (one solve)
   bool hodge_projection = false;     ///< `true` when the harmonic part was projected (open curves)
+  bool reduced_residual = false;     ///< the residual came from the reduced problem of Sec. 6
   bool lp_ran = false;               ///< the residual function (Eq. 11) was computed
   /// @}
   /// \name Residual linear program and weights

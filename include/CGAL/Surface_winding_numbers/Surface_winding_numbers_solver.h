@@ -188,8 +188,10 @@ public:
     try
     {
       if(!core_) throw Invalid_input(construction_error);   // the mesh was rejected by the constructor
-      const double epsilon = choose_parameter(get_parameter(np, snp::epsilon), 0.01);
-      const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
+      internal::Solve_options options;
+      options.epsilon = choose_parameter(get_parameter(np, snp::epsilon), 0.01);
+      options.verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
+      options.reduced_residual = choose_parameter(get_parameter(np, snp::use_reduced_residual), false);
 
       std::vector<double> chain(core_->tables().ne, 0.);
       for(edge_descriptor e : edges(tm_)) chain[get(eim_, e)] = double(get(chain_map, e));
@@ -198,12 +200,12 @@ public:
       if constexpr(is_default_parameter<NamedParameters, snp::lp_solver_t>::value)
       {
         internal::Default_linear_program_traits lp;
-        r = core_->solve(chain, epsilon, lp, verbose, rep);
+        r = core_->solve(chain, options, lp, rep);
       }
       else
       {
         auto& lp = get_parameter_reference(np, snp::lp_solver);
-        r = core_->solve(chain, epsilon, lp, verbose, rep);
+        r = core_->solve(chain, options, lp, rep);
       }
       write_outputs(r, label_map, np);
       rep.success = true;

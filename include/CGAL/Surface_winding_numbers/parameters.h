@@ -17,6 +17,7 @@ enum bounding_chain_map_t { bounding_chain_map };
 enum winding_number_map_t { winding_number_map };
 enum epsilon_t { epsilon };
 enum lp_solver_t { lp_solver };
+enum use_reduced_residual_t { use_reduced_residual };
 enum report_t { report };
 } // namespace internal_np
 /// \endcond
@@ -65,6 +66,10 @@ CGAL_SWN_NAMED_PARAMETER(report_t, report)
 CGAL_SWN_NAMED_PARAMETER(epsilon_t, epsilon)
 /// `std::ref(lp)` of a model of `SurfaceWindingNumbersLPTraits`
 CGAL_SWN_NAMED_PARAMETER(lp_solver_t, lp_solver)
+
+/// `true`: approximate the residual function by the reduced problem of the paper's Sec. 6 (gaps
+/// closed by shortest paths, one shift per region); default `false` (the exact Eq. 11)
+CGAL_SWN_NAMED_PARAMETER(use_reduced_residual_t, use_reduced_residual)
 /// @}
 
 #undef CGAL_SWN_NAMED_PARAMETER

@@ -13,6 +13,7 @@
 #include <CGAL/Surface_winding_numbers/internal/harmonic_part.h>
 #include <CGAL/Surface_winding_numbers/internal/jump_laplace.h>
 #include <CGAL/Surface_winding_numbers/internal/mesh_tables.h>
+#include <CGAL/Surface_winding_numbers/internal/reduced_residual.h>
 #include <CGAL/Surface_winding_numbers/internal/residual.h>
 #include <CGAL/Surface_winding_numbers/internal/winding_number.h>
 
@@ -25,6 +26,13 @@
 namespace CGAL {
 namespace Surface_winding_numbers {
 namespace internal {
+
+struct Solve_options
+{
+  double epsilon = 0.01;
+  bool verbose = false;
+  bool reduced_residual = false;   // paper Sec. 6 instead of the exact Eq. 11
+};
 
 struct Core_result
 {
@@ -74,8 +82,10 @@ public:
   std::size_t clamped_weights() const { return clamped_weights_; }
 
   template <class LP>
-  Core_result solve(const std::vector<double>& chain, double epsilon, LP& lp, bool verbose, Solve_report& rep)
+  Core_result solve(const std::vector<double>& chain, const Solve_options& options, LP& lp, Solve_report& rep)
   {
+    const double epsilon = options.epsilon;
+    const bool verbose = options.verbose;
     if(chain.size() != m_.ne) throw Invalid_input("the chain has the wrong size");
     if(!(epsilon > 0) || !std::isfinite(epsilon)) throw Invalid_input("epsilon must be positive and finite");
     Stopwatch clock, total;
@@ -110,6 +120,7 @@ public:
     rep.homology_correction = !m_.all_components_disks_or_spheres();
     rep.hodge_projection = false;
     rep.lp_ran = false;
+    rep.reduced_residual = false;
     rep.lp_objective = 0;
     rep.lp_variables = rep.lp_rows = 0;
     if(!rep.homology_correction)
@@ -132,13 +143,19 @@ public:
       rep.time_hodge = clock.lap();
       if(verbose) std::cerr << "[swn] Darboux derivative and harmonic part: " << rep.time_hodge << " s\n";
 
-      // v: residual function (Eq. 11)
-      const std::vector<double> v0 = local_integration(m_, gamma);
-      const std::vector<double> sigma = residual_function(residual_problem(m_, v0, chain, epsilon), lp,
-                                                          rep.lp_objective, rep.lp_variables, rep.lp_rows);
+      // v: residual function (Eq. 11), or its reduced approximation (Sec. 6)
+      if(options.reduced_residual)
+        r.v = reduced_residual_function(m_, chain, gamma, epsilon, lp, rep.lp_objective, rep.lp_variables, rep.lp_rows);
+      else
+      {
+        const std::vector<double> v0 = local_integration(m_, gamma);
+        const std::vector<double> sigma = residual_function(residual_problem(m_, v0, chain, epsilon), lp,
+                                                            rep.lp_objective, rep.lp_variables, rep.lp_rows);
+        r.v.resize(3 * m_.nf);
+        for(std::size_t k = 0; k < 3 * m_.nf; ++k) r.v[k] = v0[k] + sigma[k / 3];
+      }
       rep.lp_ran = true;
-      r.v.resize(3 * m_.nf);
-      for(std::size_t k = 0; k < 3 * m_.nf; ++k) r.v[k] = v0[k] + sigma[k / 3];
+      rep.reduced_residual = options.reduced_residual;
       r.g = jump_derivative(m_, r.v);
       rep.time_residual = clock.lap();
       if(verbose)
