@@ -222,3 +222,18 @@ TEST(Tool, TorusPhiMeridianIsTheNonboundingLoop)
   EXPECT_EQ(chain_edges_in_obj(slurp((out / "nonbounding.obj").string())), 78);   // the completed meridian
   fs::remove_all(out);
 }
+
+TEST(Tool, DoubleTorusWithLoopsHasThreeLabelLevels)
+{
+  // 7 inline OBJ polylines, each missing its closing edge; the reduced residual (paper Sec. 6)
+  // keeps this test fast with any LP backend
+  std::string summary;
+  const std::map<int, int> h =
+    solve_demo("'" + demo + "DoubleTorusWithLoops.obj' --reduced-residual", "dtloops", &summary);
+  ASSERT_EQ(h.size(), 3u);
+  EXPECT_EQ(h.at(0), 17237);   // the authors' demo: 17231 / 17143 / 582 before refining one short piece (+12 faces)
+  EXPECT_EQ(h.at(1), 17149);
+  EXPECT_EQ(h.at(2), 582);
+  EXPECT_NE(summary.find("\"interior_endpoints\": 14"), std::string::npos);
+  EXPECT_NE(summary.find("\"reduced_residual\": true"), std::string::npos);
+}
