@@ -1,0 +1,58 @@
+#!/usr/bin/env python3
+"""Sanity check of a benchmark summary (the ctest smoke test runs it on the --quick summary).
+
+  check_summary.py DIR [--min-cases N] [--max-genus0-mean P] [--max-handles-median P]
+
+Checks accuracy only (never times): required fields present, every case solved, the free function
+agrees with the solver class, gap-free simply connected cases are exact, the genus-0 mean error and
+the median error on surfaces with handles are under sane bounds, and SWN beats the naive baseline on
+surfaces with handles. Prints one line per check and 'N passed, N failed'.
+"""
+import argparse
+import csv
+import json
+import os
+import sys
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("dir")
+    ap.add_argument("--min-cases", type=int, default=8)
+    ap.add_argument("--max-genus0-mean", type=float, default=1.0)
+    ap.add_argument("--max-handles-median", type=float, default=5.0)
+    a = ap.parse_args()
+    s = json.load(open(os.path.join(a.dir, "summary.json")))
+    rows = list(csv.DictReader(open(os.path.join(a.dir, "cases.csv"))))
+    checks = []
+
+    def check(name, ok, detail=""):
+        checks.append(ok)
+        print("%s: %s %s" % ("PASS" if ok else "FAIL", name, detail))
+
+    required = ["cases", "genus0_mean_error_percent", "genus0_max_error_percent",
+                "handles_fraction_under_0_5_percent", "naive_genus0_mean_error_percent", "machine", "date"]
+    missing = [k for k in required if k not in s]
+    check("summary fields present", not missing, "missing: %s" % missing if missing else "")
+    check("enough cases", s.get("cases", 0) >= a.min_cases, "(%s cases)" % s.get("cases"))
+    check("every case solved", s.get("cases_ok") == s.get("cases"), str(s.get("failures", ""))[:300])
+    check("cases.csv has one row per case", len(rows) == s.get("cases"))
+    check("free function == solver class", bool(s.get("api_match")))
+    g0 = s.get("genus0_mean_error_percent")
+    check("genus-0 mean error < %g %%" % a.max_genus0_mean, g0 is not None and g0 < a.max_genus0_mean, "(%s)" % g0)
+    exact = [r for r in rows if r.get("simply_connected") == "1" and float(r.get("gap_level") or 0) == 0]
+    check("gap-free simply connected cases are exact",
+          bool(exact) and all(float(r["error_percent"]) == 0 for r in exact), "(%d cases)" % len(exact))
+    hm = s.get("handles_median_error_percent")
+    if s.get("handles_cases", 0) > 0:
+        check("handles median error < %g %%" % a.max_handles_median, hm is not None and hm < a.max_handles_median, "(%s)" % hm)
+        nm, sm = s.get("naive_handles_mean_error_percent"), s.get("handles_mean_error_percent")
+        check("SWN beats naive rounding on surfaces with handles", sm is not None and nm is not None and sm < nm,
+              "(SWN %s, naive %s)" % (sm, nm))
+    passed = sum(1 for c in checks if c)
+    print("%d passed, %d failed" % (passed, len(checks) - passed))
+    return 0 if all(checks) else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())

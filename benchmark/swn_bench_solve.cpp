@@ -1,0 +1,326 @@
+// swn_bench_solve: solves one benchmark case in process and prints one JSON line of metrics.
+//
+//   swn_bench_solve CASE_DIR MESH_FILE [--check-api] [--lp default|glpk]
+//
+// Reads the mesh and CASE_DIR/curve.txt with the package's readers (IO::read_mesh, IO::read_curve_file,
+// IO::vertex_curve_chain), runs the public API (Surface_winding_numbers_solver::solve with the default
+// linear solvers), and compares with CASE_DIR/labels_gt.txt and CASE_DIR/planted.txt:
+//
+// * error_percent: mislabeled area in % of the total area; labels are compared up to one integer per
+//   connected component (the offset that matches the largest area is chosen per component);
+// * naive_error_percent: the same for the naive baseline, the rounding of the first jump-harmonic
+//   function u (the generalized-winding-number approach, with the same shift tau as the library);
+// * the nonbounding chain G: number of edges, whether it is closed (relative to the border), whether it
+//   is homologous to the planted chain in H1(M, border) (G - planted = J F for a face function F);
+// * Solve_report timings, construction time, peak memory (getrusage).
+//
+// --check-api also runs the free function CGAL::surface_winding_numbers() and checks that it gives the
+// same labels and G as the solver class.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/surface_winding_numbers.h>
+#include <CGAL/Surface_winding_numbers/IO/conforming_cut.h>
+#include <CGAL/Surface_winding_numbers/IO/curve_io.h>
+#include <CGAL/Surface_winding_numbers/IO/read_mesh.h>
+#include <CGAL/Surface_winding_numbers/internal/cotan_weights.h>
+#include <CGAL/Surface_winding_numbers/internal/jump_laplace.h>
+#include <CGAL/Surface_winding_numbers/internal/winding_number.h>
+
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+namespace SWN = CGAL::Surface_winding_numbers;
+namespace SI = CGAL::Surface_winding_numbers::internal;
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t0)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Mislabeled area (in % of the total) of `labels` against `gt`, up to one integer per component.
+double error_percent(const SI::Mesh_tables& m, const std::vector<double>& area, const std::vector<int>& labels,
+                     const std::vector<int>& gt)
+{
+  std::vector<std::map<long, double>> hist(m.n_components);
+  std::vector<double> comp_area(m.n_components, 0.);
+  double total = 0;
+  for(std::size_t f = 0; f < m.nf; ++f)
+  {
+    const std::size_t c = m.face_component[f];
+    hist[c][long(labels[f]) - long(gt[f])] += area[f];
+    comp_area[c] += area[f];
+    total += area[f];
+  }
+  double wrong = 0;
+  for(std::size_t c = 0; c < m.n_components; ++c)
+  {
+    double best = 0;
+    for(const auto& kv : hist[c]) best = std::max(best, kv.second);
+    wrong += comp_area[c] - best;
+  }
+  return total > 0 ? 100. * wrong / total : 0.;
+}
+
+// Is D (per table edge, interior edges only) = J F for some face function F?
+bool is_relative_boundary(const SI::Mesh_tables& m, const std::vector<long>& D)
+{
+  // F(left) - F(right) = D on every arc; propagate over the dual graph and check consistency
+  std::vector<std::vector<std::pair<std::size_t, long>>> adj(m.nf);   // neighbour, F(nb) - F(f)
+  for(const SI::Arc& a : m.arcs)
+  {
+    const std::size_t L = a.left_side / 3, R = a.right_side / 3;
+    const long d = D[a.edge];
+    adj[L].push_back({R, -d});
+    adj[R].push_back({L, d});
+  }
+  std::vector<long> F(m.nf, 0);
+  std::vector<char> seen(m.nf, 0);
+  for(std::size_t f0 = 0; f0 < m.nf; ++f0)
+  {
+    if(seen[f0]) continue;
+    seen[f0] = 1;
+    std::vector<std::size_t> stack{f0};
+    while(!stack.empty())
+    {
+      const std::size_t f = stack.back();
+      stack.pop_back();
+      for(const auto& [g, d] : adj[f])
+      {
+        if(!seen[g]) { seen[g] = 1; F[g] = F[f] + d; stack.push_back(g); }
+        else if(F[g] != F[f] + d) return false;
+      }
+    }
+  }
+  return true;
+}
+
+// Closed relative to the border: the boundary of the chain vanishes at every vertex off the border.
+bool is_relatively_closed(const SI::Mesh_tables& m, const std::vector<long>& C)
+{
+  std::vector<long> div(m.nv, 0);
+  for(std::size_t e = 0; e < m.ne; ++e)
+  {
+    div[m.ev[2 * e]] -= C[e];
+    div[m.ev[2 * e + 1]] += C[e];
+  }
+  for(std::size_t v = 0; v < m.nv; ++v)
+    if(div[v] != 0 && !m.vertex_on_border[v]) return false;
+  return true;
+}
+
+std::vector<int> read_labels(const std::string& file, std::size_t n)
+{
+  std::ifstream is(file);
+  if(!is) throw std::runtime_error("cannot read " + file);
+  std::vector<int> l;
+  l.reserve(n);
+  int x;
+  while(is >> x) l.push_back(x);
+  if(l.size() != n) throw std::runtime_error(file + ": " + std::to_string(l.size()) + " labels for " + std::to_string(n) + " faces");
+  return l;
+}
+
+// planted.txt: `# swn halfedges` lines `h SRC DST M` (may be empty)
+std::vector<long> read_planted(const std::string& file, const Mesh& mesh)
+{
+  std::vector<long> c(mesh.number_of_edges(), 0);
+  std::ifstream is(file);
+  if(!is) throw std::runtime_error("cannot read " + file);
+  std::string line;
+  while(std::getline(is, line))
+  {
+    if(line.empty() || line[0] == '#') continue;
+    std::istringstream ls(line);
+    std::string h;
+    std::size_t a, b;
+    long mult = 1;
+    ls >> h >> a >> b;
+    if(!(ls >> mult)) mult = 1;
+    const auto hb = CGAL::halfedge(Mesh::Vertex_index(Mesh::size_type(a)), Mesh::Vertex_index(Mesh::size_type(b)), mesh);
+    if(!hb.second) throw std::runtime_error(file + ": not an edge: " + line);
+    const auto e = mesh.edge(hb.first);
+    c[std::size_t(e)] += (std::size_t(hb.first) % 2 == 0) ? mult : -mult;   // positive along the even halfedge
+  }
+  return c;
+}
+
+long peak_rss_kb()
+{
+  rusage ru;
+  getrusage(RUSAGE_SELF, &ru);
+  return ru.ru_maxrss;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  if(argc < 3)
+  {
+    std::cerr << "usage: swn_bench_solve CASE_DIR MESH_FILE [--check-api] [--lp default|glpk]\n";
+    return 2;
+  }
+  const std::string dir = argv[1], mesh_file = argv[2];
+  bool check_api = false;
+  std::string lp_name = "default";
+  for(int i = 3; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    if(a == "--check-api") check_api = true;
+    else if(a == "--lp" && i + 1 < argc) lp_name = argv[++i];
+    else { std::cerr << "swn_bench_solve: unknown argument " << a << "\n"; return 2; }
+  }
+
+  std::ostringstream out;
+  out << std::setprecision(6);
+  try
+  {
+    const auto t_read0 = std::chrono::steady_clock::now();
+    Mesh mesh;
+    SWN::IO::read_mesh(mesh_file, mesh);
+    const SWN::IO::Curve_set curve = SWN::IO::read_curve_file(dir + "/curve.txt", mesh);
+    const std::vector<int> chain_e = SWN::IO::vertex_curve_chain(mesh, curve);
+    const std::vector<int> gt = read_labels(dir + "/labels_gt.txt", mesh.number_of_faces());
+    const std::vector<long> planted_e = read_planted(dir + "/planted.txt", mesh);
+    const double t_read = seconds_since(t_read0);
+
+    auto chain = mesh.add_property_map<Mesh::Edge_index, int>("e:chain", 0).first;
+    for(auto e : mesh.edges()) chain[e] = chain_e[std::size_t(e)];
+    auto labels = mesh.add_property_map<Mesh::Face_index, int>("f:W", 0).first;
+    auto G = mesh.add_property_map<Mesh::Edge_index, int>("e:G", 0).first;
+
+    // the library: solver class (construction timed separately), default linear solvers
+    const auto t_c0 = std::chrono::steady_clock::now();
+    SWN::Surface_winding_numbers_solver<Mesh> solver(mesh);
+    const double t_construct = seconds_since(t_c0);
+    if(!solver.is_valid()) throw std::runtime_error("mesh rejected: " + solver.report().error);
+    SWN::Solve_report rep;
+    bool ok = false;
+    std::string lp_backend = SI::Default_linear_program_traits::name();
+    if(lp_name == "default")
+      ok = solver.solve(chain, labels, SWN::parameters::nonbounding_chain_map(G, SWN::parameters::report(std::ref(rep))));
+#ifdef CGAL_USE_GLPK
+    else if(lp_name == "glpk")
+    {
+      SWN::GLPK_linear_program_traits lp;
+      lp_backend = lp.name();
+      ok = solver.solve(chain, labels, SWN::parameters::nonbounding_chain_map(G, SWN::parameters::report(std::ref(rep), SWN::parameters::lp_solver(std::ref(lp)))));
+    }
+#endif
+    else throw std::runtime_error("unknown --lp " + lp_name);
+    const long rss_after_swn = peak_rss_kb();
+
+    const SI::Mesh_tables& m = solver.tables();
+    std::vector<double> area(m.nf);
+    for(std::size_t f = 0; f < m.nf; ++f)
+    {
+      const double *p = m.point(m.fv[3 * f]), *q = m.point(m.fv[3 * f + 1]), *r = m.point(m.fv[3 * f + 2]);
+      const double a[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]}, b[3] = {r[0] - p[0], r[1] - p[1], r[2] - p[2]};
+      const double n[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+      area[f] = 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    }
+    // everything per table index
+    std::vector<int> gt_t(m.nf), W(m.nf);
+    for(auto f : mesh.faces()) { gt_t[solver.face_index(f)] = gt[std::size_t(f)]; W[solver.face_index(f)] = labels[f]; }
+    std::vector<double> chain_t(m.ne, 0.);
+    std::vector<long> G_t(m.ne, 0), P_t(m.ne, 0);
+    for(auto e : mesh.edges())
+    {
+      chain_t[solver.edge_index(e)] = chain[e];
+      G_t[solver.edge_index(e)] = G[e];
+      P_t[solver.edge_index(e)] = planted_e[std::size_t(e)];
+    }
+
+    // naive baseline: round u + tau (u: the first jump Laplace solve, as in the pipeline)
+    const auto t_n0 = std::chrono::steady_clock::now();
+    std::vector<double> weight;
+    SI::cotan_weights(m, weight);
+    const std::vector<char> endpoint = SI::interior_endpoints(m, chain_t);
+    SI::Jump_laplace_system<SI::Default_sparse_solver> L;
+    L.jump_laplacian(m, weight, endpoint);
+    const std::vector<double> u = L.solve_jump_laplace(SI::reduced_coordinates(m, SI::arc_jumps_from_chain(m, chain_t), endpoint));
+    const std::vector<double> tau_u = SI::shift_tau(m, chain_t, u);
+    std::vector<int> naive = SI::round_labels(m, u, tau_u);
+    SI::normalize_labels(m, naive);
+    const double t_naive = seconds_since(t_n0);
+
+    // metrics
+    std::size_t planted_edges = 0, G_edges = 0;
+    for(long x : P_t) planted_edges += x != 0;
+    for(long x : G_t) G_edges += x != 0;
+    std::vector<long> D(m.ne);
+    for(std::size_t e = 0; e < m.ne; ++e) D[e] = G_t[e] - P_t[e];
+    const bool G_closed = is_relatively_closed(m, G_t);
+    const bool G_homologous = ok && is_relative_boundary(m, D);
+    const bool G_trivial = is_relative_boundary(m, G_t);
+    std::size_t G_exact_edges = 0;   // edges where G equals the planted chain, among the planted edges
+    for(std::size_t e = 0; e < m.ne; ++e) if(P_t[e] != 0 && G_t[e] == P_t[e]) ++G_exact_edges;
+    int max_label = 0, min_label = 0;
+    for(int l : W) { max_label = std::max(max_label, l); min_label = std::min(min_label, l); }
+
+    bool api_match = true;
+    double t_api = 0;
+    if(check_api)
+    {
+      auto W2 = mesh.add_property_map<Mesh::Face_index, int>("f:W2", 0).first;
+      auto G2 = mesh.add_property_map<Mesh::Edge_index, int>("e:G2", 0).first;
+      SWN::Solve_report rep2;
+      const auto t_a0 = std::chrono::steady_clock::now();
+      const bool ok2 = CGAL::surface_winding_numbers(mesh, chain, W2, SWN::parameters::nonbounding_chain_map(G2, SWN::parameters::report(std::ref(rep2))));
+      t_api = seconds_since(t_a0);
+      api_match = ok2 == ok;
+      for(auto f : mesh.faces()) api_match = api_match && W2[f] == labels[f];
+      for(auto e : mesh.edges()) api_match = api_match && G2[e] == G[e];
+    }
+
+    out << "{\"ok\": " << (ok ? "true" : "false");
+    if(!ok) out << ", \"error\": \"" << rep.error << "\"";
+    out << ", \"lp_backend\": \"" << lp_backend << "\"";
+    out << ", \"error_percent\": " << (ok ? error_percent(m, area, W, gt_t) : 100.)
+        << ", \"naive_error_percent\": " << error_percent(m, area, naive, gt_t)
+        << ", \"components\": " << rep.components << ", \"report_genus\": " << rep.genus
+        << ", \"curve_edges\": " << rep.curve_edges << ", \"interior_endpoints\": " << rep.interior_endpoints
+        << ", \"homology_correction\": " << (rep.homology_correction ? "true" : "false")
+        << ", \"hodge_projection\": " << (rep.hodge_projection ? "true" : "false")
+        << ", \"lp_ran\": " << (rep.lp_ran ? "true" : "false") << ", \"lp_variables\": " << rep.lp_variables
+        << ", \"lp_rows\": " << rep.lp_rows << ", \"lp_objective\": " << rep.lp_objective
+        << ", \"min_label\": " << min_label << ", \"max_label\": " << max_label
+        << ", \"planted_edges_read\": " << planted_edges << ", \"G_edges\": " << G_edges
+        << ", \"G_closed\": " << (G_closed ? "true" : "false")
+        << ", \"G_nonzero_in_homology\": " << (G_trivial ? "false" : "true")
+        << ", \"G_homologous_to_planted\": " << (G_homologous ? "true" : "false")
+        << ", \"G_planted_edges_matched\": " << G_exact_edges
+        << ", \"time_read\": " << t_read << ", \"time_construct\": " << t_construct
+        << ", \"time_setup\": " << rep.time_setup << ", \"time_jump_laplace\": " << rep.time_jump_laplace
+        << ", \"time_hodge\": " << rep.time_hodge << ", \"time_residual\": " << rep.time_residual
+        << ", \"time_second_solve\": " << rep.time_second_solve << ", \"time_labels\": " << rep.time_labels
+        << ", \"time_total\": " << rep.time_total << ", \"time_swn\": " << t_construct + rep.time_total
+        << ", \"time_naive\": " << t_naive << ", \"peak_rss_mb\": " << double(rss_after_swn) / 1024.
+        << ", \"peak_rss_mb_all\": " << double(peak_rss_kb()) / 1024.;
+    if(check_api) out << ", \"api_match\": " << (api_match ? "true" : "false") << ", \"time_api\": " << t_api;
+    out << "}";
+  }
+  catch(const std::exception& e)
+  {
+    std::string msg = e.what();
+    for(char& c : msg) if(c == '"' || c == '\\' || c == '\n') c = ' ';
+    std::cout << "{\"ok\": false, \"error\": \"" << msg << "\"}" << std::endl;
+    return 1;
+  }
+  std::cout << out.str() << std::endl;
+  return 0;
+}
