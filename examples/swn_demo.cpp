@@ -103,5 +103,6 @@ int main(int argc, char** argv)
     }
     std::cout << "wrote " << argv[1] << "\n";
   }
-  return 0;
+  // the inside of the loop is 12 x 8 quads, and G is the whole meridian
+  return (faces_per_label.size() == 2 && faces_per_label[1] == 2 * 12 * 8 && G_on_meridian == std::size_t(nv)) ? 0 : 1;
 }
