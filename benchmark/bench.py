@@ -26,10 +26,11 @@ COLUMNS = [
     "case", "mesh", "source", "vertices", "faces", "genus", "border_loops", "simply_connected",
     "region_seed", "gap_level", "gap_fraction", "curve_edges_full", "curve_edges", "interior_endpoints",
     "max_gt_label", "planted_loops", "planted_arcs", "planted_edges", "planted_nontrivial",
+    "planted_shared_edges", "planted_cancelled_edges", "loops_straightened",
     "ok", "status", "error", "lp_backend",
     "error_percent", "naive_error_percent",
     "G_edges", "G_closed", "G_nonzero_in_homology", "G_homologous_to_planted", "G_planted_edges_matched",
-    "loops_recovered",
+    "loops_recovered", "cost_G", "cost_planted",
     "homology_correction", "hodge_projection", "lp_ran", "lp_variables", "lp_rows", "lp_objective",
     "min_label", "max_label",
     "time_read", "time_construct", "time_setup", "time_jump_laplace", "time_hodge", "time_residual",
@@ -358,6 +359,8 @@ def main():
     ap.add_argument("--cgal-data", default="")
     ap.add_argument("--mesh-cache", default="")
     ap.add_argument("--command", default="")
+    ap.add_argument("--gaps", default="per-curve", help="gap mode of the generator: per-curve | global")
+    ap.add_argument("--straighten", default="on", help="straighten the planted loops: on | off")
     ap.add_argument("--merge", action="store_true")
     ap.add_argument("--summarize", action="store_true")
     ap.add_argument("dirs", nargs="*")
@@ -374,7 +377,7 @@ def main():
             rows += read_csv(os.path.join(d, "cases.csv"))
             try:
                 s = json.load(open(os.path.join(d, "summary.json")))
-                for k in ("suite", "command", "git_commit", "wall_time_seconds", "jobs"):
+                for k in ("suite", "command", "git_commit", "wall_time_seconds", "jobs", "gap_mode", "straighten", "lp_option"):
                     if k in s and k not in extra:
                         extra[k] = s[k]
             except OSError:
@@ -395,6 +398,7 @@ def main():
         gen += ["--cgal-data", args.cgal_data]
     if args.mesh_cache:
         gen += ["--mesh-cache", args.mesh_cache]
+    gen += ["--gaps", args.gaps, "--straighten", args.straighten]
     print("[bench] generating cases: " + " ".join(gen), file=sys.stderr)
     run(gen)
     t_gen = time.time() - t0
@@ -416,7 +420,7 @@ def main():
         rows = list(ex.map(one, enumerate(cases)))
     write_csv(os.path.join(out, "cases.csv"), rows)
     extra = {"suite": args.suite, "shard": args.shard, "jobs": args.jobs, "timeout_seconds": args.timeout,
-             "lp_option": args.lp, "command": args.command or " ".join(sys.argv), "git_commit": git_commit(root),
+             "lp_option": args.lp, "gap_mode": args.gaps, "straighten": args.straighten, "command": args.command or " ".join(sys.argv), "git_commit": git_commit(root),
              "generation_seconds": t_gen, "wall_time_seconds": time.time() - t0}
     s = summarize(rows, out, extra)
     plots(rows, out)

@@ -1,12 +1,13 @@
 #!/usr/bin/env python3
 """Sanity check of a benchmark summary (the ctest smoke test runs it on the --quick summary).
 
-  check_summary.py DIR [--min-cases N] [--max-genus0-mean P] [--max-handles-median P]
+  check_summary.py DIR [--min-cases N] [--max-genus0-mean P]
 
 Checks accuracy only (never times): required fields present, every case solved, the free function
 agrees with the solver class, gap-free simply connected cases are exact, the genus-0 mean error and
-the median error on surfaces with handles are under sane bounds, and SWN beats the naive baseline on
-surfaces with handles. Prints one line per check and 'N passed, N failed'.
+is under a sane bound, on gap-free surfaces with handles the nonbounding chain G is homologous to
+the planted loops, and SWN beats the naive baseline on surfaces with handles. (The error of single
+cases with handles is not bounded: a region may legitimately be absorbed into G, see RESULTS.md.) Prints one line per check and 'N passed, N failed'.
 """
 import argparse
 import csv
@@ -20,7 +21,6 @@ def main():
     ap.add_argument("dir")
     ap.add_argument("--min-cases", type=int, default=8)
     ap.add_argument("--max-genus0-mean", type=float, default=1.0)
-    ap.add_argument("--max-handles-median", type=float, default=5.0)
     a = ap.parse_args()
     s = json.load(open(os.path.join(a.dir, "summary.json")))
     rows = list(csv.DictReader(open(os.path.join(a.dir, "cases.csv"))))
@@ -43,9 +43,10 @@ def main():
     exact = [r for r in rows if r.get("simply_connected") == "1" and float(r.get("gap_level") or 0) == 0]
     check("gap-free simply connected cases are exact",
           bool(exact) and all(float(r["error_percent"]) == 0 for r in exact), "(%d cases)" % len(exact))
-    hm = s.get("handles_median_error_percent")
     if s.get("handles_cases", 0) > 0:
-        check("handles median error < %g %%" % a.max_handles_median, hm is not None and hm < a.max_handles_median, "(%s)" % hm)
+        h0 = [r for r in rows if r.get("simply_connected") == "0" and float(r.get("gap_level") or 0) == 0]
+        check("gap-free cases with handles: G homologous to the planted loops",
+              bool(h0) and all(r.get("loops_recovered") == "1" for r in h0), "(%d cases)" % len(h0))
         nm, sm = s.get("naive_handles_mean_error_percent"), s.get("handles_mean_error_percent")
         check("SWN beats naive rounding on surfaces with handles", sm is not None and nm is not None and sm < nm,
               "(SWN %s, naive %s)" % (sm, nm))

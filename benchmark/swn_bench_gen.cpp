@@ -1,6 +1,7 @@
 // swn_bench_gen: builds the meshes and the cases of the Surface Winding Numbers benchmark.
 //
 //   swn_bench_gen --suite quick|full --out CASES_DIR [--mesh-cache DIR] [--cgal-data DIR] [--shard I/N]
+//                 [--gaps per-curve|global] [--straighten on|off]
 //   swn_bench_gen --info MESH...        genus, borders, components and size of mesh files
 //
 // A case is: a mesh (OFF, written once per mesh into the mesh cache), a curve file in the swn tool's
@@ -133,39 +134,56 @@ Suite make_suite(const std::string& name)
     add("q_torus", "chain", 1, "", 0, 3000, 1);
     add("q_chain2_holes", "chain", 2, "holes", 2, 4000, 1);
   }
-  else if(name == "full")
+  else if(name == "full" || name == "ablation")
   {
+    // "full": 380 cases (3 random regions per mesh, 2 on the largest ones, 4 gap levels);
+    // "ablation": the same 28 meshes of 10k-115k vertices without the larger extra ones, 2 regions
+    // per mesh (216 cases), to compare generator settings quickly.
+    const bool full = name == "full";
+    const int k = full ? 3 : 2;
     s.gaps = {0.0, 0.05, 0.15, 0.30};
     // simply connected (spheres and disks)
-    add("blob0", "blob", 0, "", 0, 10000, 2);
-    add("blob1", "blob", 1, "", 0, 20000, 2);
-    add("blob2", "blob", 2, "", 0, 30000, 2);
-    add("blob3", "blob", 3, "", 0, 60000, 1);
-    add("blob4", "blob", 4, "", 0, 100000, 1);
-    add("disk0", "blob", 5, "plane", 0, 12000, 2);
-    add("disk1", "blob", 6, "plane", 0, 25000, 2);
-    add("elephant", "file", 0, "", 0, 15000, 2, "elephant.off");
-    add("bunny", "file", 0, "", 0, 12000, 2, "bunny00.off");
-    add("pig", "file", 0, "", 0, 15000, 2, "pig.off");
-    add("cow_sc", "file", 0, "", 0, 12000, 2, "cow.off");
-    add("hand", "file", 0, "", 0, 20000, 2, "hand.off");
-    add("mushroom", "file", 0, "", 0, 10000, 2, "mushroom.off");
+    add("blob0", "blob", 0, "", 0, 10000, k);
+    add("blob1", "blob", 1, "", 0, 20000, k);
+    add("blob2", "blob", 2, "", 0, 30000, k);
+    add("blob3", "blob", 3, "", 0, 60000, full ? 2 : 1);
+    add("blob4", "blob", 4, "", 0, 100000, full ? 2 : 1);
+    add("disk0", "blob", 5, "plane", 0, 12000, k);
+    add("disk1", "blob", 6, "plane", 0, 25000, k);
+    add("bunny", "file", 0, "", 0, 12000, k, "bunny00.off");
+    add("cow_sc", "file", 0, "", 0, 12000, k, "cow.off");
+    add("hand", "file", 0, "", 0, 20000, k, "hand.off");
+    add("mushroom", "file", 0, "", 0, 10000, k, "mushroom.off");
+    if(full)
+    {
+      add("armadillo", "file", 0, "", 0, 30000, k, "armadillo.off");
+      add("bull", "file", 0, "", 0, 15000, k, "bull.off");
+    }
     // with handles (genus > 0, or several border loops)
-    add("torus", "chain", 1, "", 0, 10000, 2);
-    add("chain2", "chain", 2, "", 0, 12000, 2);
-    add("chain3", "chain", 3, "", 0, 15000, 2);
-    add("chain4", "chain", 4, "", 0, 15000, 2);
-    add("chain5", "chain", 5, "", 0, 18000, 2);
-    add("ring5", "ring", 5, "", 0, 20000, 2);
-    add("chain3_holes", "chain", 3, "holes", 3, 12000, 2);
-    add("plate4", "chain", 4, "plane", 0, 12000, 2);
-    add("refined_elephant", "file", 0, "", 0, 15000, 2, "refined_elephant.off");
-    add("eight", "file", 0, "", 0, 10000, 2, "eight.off");
-    add("3torus", "file", 0, "", 0, 12000, 2, "3torus.off");
-    add("knot", "file", 0, "", 0, 12000, 2, "knot1.off");
-    add("anchor", "file", 0, "", 0, 10000, 2, "anchor.off");
-    add("femur", "file", 0, "", 0, 12000, 2, "femur.off");
-    add("turbine", "file", 0, "", 0, 12000, 2, "turbine.off");
+    add("elephant", "file", 0, "", 0, 15000, k, "elephant.off");
+    add("pig", "file", 0, "", 0, 15000, k, "pig.off");
+    add("torus", "chain", 1, "", 0, 10000, k);
+    add("chain2", "chain", 2, "", 0, 12000, k);
+    add("chain3", "chain", 3, "", 0, 15000, k);
+    add("chain4", "chain", 4, "", 0, 15000, k);
+    add("chain5", "chain", 5, "", 0, 18000, k);
+    add("ring5", "ring", 5, "", 0, 20000, k);
+    add("chain3_holes", "chain", 3, "holes", 3, 12000, k);
+    add("plate4", "chain", 4, "plane", 0, 12000, k);
+    add("refined_elephant", "file", 0, "", 0, 15000, k, "refined_elephant.off");
+    add("eight", "file", 0, "", 0, 10000, k, "eight.off");
+    add("3torus", "file", 0, "", 0, 12000, k, "3torus.off");
+    add("knot", "file", 0, "", 0, 12000, k, "knot1.off");
+    add("anchor", "file", 0, "", 0, 10000, k, "anchor.off");
+    add("femur", "file", 0, "", 0, 12000, k, "femur.off");
+    add("turbine", "file", 0, "", 0, 12000, k, "turbine.off");
+    if(full)
+    {
+      add("chain3_50k", "chain", 3, "", 0, 50000, 2);
+      add("refined_elephant_45k", "file", 0, "", 0, 45000, 2, "refined_elephant.off");
+      add("turbine_40k", "file", 0, "", 0, 40000, 2, "turbine.off");
+      add("chain6_80k", "chain", 6, "", 0, 80000, 1);
+    }
   }
   else
     throw std::runtime_error("unknown suite " + name);
@@ -500,12 +518,100 @@ bool is_closed(const Mesh& m, const Chain& c)
   return true;
 }
 
+// The chain of a cyclic vertex sequence (consecutive vertices adjacent).
+Chain loop_chain(const Mesh& m, const std::vector<VI>& loop)
+{
+  Chain c(m.number_of_edges(), 0);
+  for(std::size_t i = 0; i < loop.size(); ++i)
+    if(loop[i] != loop[(i + 1) % loop.size()]) add_traversal(m, c, loop[i], loop[(i + 1) % loop.size()], 1);
+  return c;
+}
+
+// Straightens a loop (paper: FlipOut, then snapped back to edges): repeatedly replaces a stretch of
+// the loop by the shortest edge path between its ends inside a thin corridor around the stretch
+// (a few rings of faces, so the replacement is homotopic), until no stretch gets shorter. Border
+// edges are never used. The caller checks that the result is homologous to the input.
+std::vector<VI> straighten_loop(const Mesh& m, std::vector<VI> loop, const std::vector<double>& len, Rng& rng)
+{
+  const std::size_t nv = m.number_of_vertices();
+  std::vector<int> stamp(nv, -1), dist_stamp(nv, -1), ring(nv, 0);
+  std::vector<double> dist(nv);
+  std::vector<HI> par(nv);
+  int stamp_id = 0;
+  auto edge_len = [&](VI a, VI b) { return len[std::size_t(m.edge(m.halfedge(a, b)))]; };
+  for(int pass = 0; pass < 6; ++pass)
+  {
+    bool improved = false;
+    const std::size_t n0 = loop.size();
+    if(n0 < 6) break;
+    std::rotate(loop.begin(), loop.begin() + std::ptrdiff_t(rng.index(n0)), loop.end());
+    const std::size_t k = std::max<std::size_t>(3, std::min<std::size_t>(n0 / 3, 40));
+    for(std::size_t start = 0; start + k < loop.size(); start += k / 2)
+    {
+      // corridor: vertices within 3 rings of the stretch loop[start..start+k]
+      ++stamp_id;
+      std::vector<VI> frontier;
+      double old_len = 0;
+      for(std::size_t i = start; i <= start + k; ++i)
+      {
+        if(stamp[std::size_t(loop[i])] != stamp_id) { stamp[std::size_t(loop[i])] = stamp_id; ring[std::size_t(loop[i])] = 0; frontier.push_back(loop[i]); }
+        if(i > start) old_len += edge_len(loop[i - 1], loop[i]);
+      }
+      for(int r = 1; r <= 3; ++r)
+      {
+        std::vector<VI> next;
+        for(VI x : frontier)
+          for(VI y : CGAL::vertices_around_target(m.halfedge(x), m))
+            if(stamp[std::size_t(y)] != stamp_id) { stamp[std::size_t(y)] = stamp_id; ring[std::size_t(y)] = r; next.push_back(y); }
+        frontier.swap(next);
+      }
+      // Dijkstra from a to b inside the corridor, over interior edges
+      const VI a = loop[start], b = loop[start + k];
+      typedef std::pair<double, std::size_t> QE;
+      std::priority_queue<QE, std::vector<QE>, std::greater<QE>> q;
+      dist_stamp[std::size_t(a)] = stamp_id;
+      dist[std::size_t(a)] = 0;
+      q.push({0., std::size_t(a)});
+      bool reached = false;
+      while(!q.empty())
+      {
+        auto [d, xi] = q.top();
+        q.pop();
+        if(d > dist[xi]) continue;
+        if(xi == std::size_t(b)) { reached = true; break; }
+        const VI x(static_cast<Mesh::size_type>(xi));
+        for(HI h : CGAL::halfedges_around_source(x, m))
+        {
+          if(m.is_border(m.edge(h))) continue;
+          const std::size_t y = std::size_t(m.target(h));
+          if(stamp[y] != stamp_id) continue;
+          const double nd = d + len[std::size_t(m.edge(h))];
+          if(dist_stamp[y] != stamp_id || nd < dist[y]) { dist_stamp[y] = stamp_id; dist[y] = nd; par[y] = h; q.push({nd, y}); }
+        }
+      }
+      if(!reached || dist[std::size_t(b)] >= old_len * (1 - 1e-9)) continue;
+      std::vector<VI> path;
+      for(VI x = b; x != a; x = m.source(par[std::size_t(x)])) path.push_back(x);
+      path.push_back(a);
+      std::reverse(path.begin(), path.end());   // a ... b
+      std::vector<VI> nl(loop.begin(), loop.begin() + std::ptrdiff_t(start));
+      nl.insert(nl.end(), path.begin(), path.end());
+      nl.insert(nl.end(), loop.begin() + std::ptrdiff_t(start + k + 1), loop.end());
+      loop.swap(nl);
+      improved = true;
+    }
+    if(!improved) break;
+  }
+  return loop;
+}
+
 // Greedy homology basis (Erickson-Whittlesey 2005) of the surface with its border loops capped by
 // virtual cones, plus shortest arcs between border loops: a basis of H1(M, border) made of chains on
 // interior edges. Generators that would use a border edge are dropped.
 struct Basis
 {
   std::vector<Chain> loops;     // handle loops
+  std::vector<std::vector<VI>> loop_vertices;   // the same, as cyclic vertex sequences
   std::vector<Chain> arcs;      // arcs from border loop j to border loop 0
   int dropped = 0;
 };
@@ -596,11 +702,16 @@ Basis homology_basis(const Mesh& m, Rng& rng)
     const EI e(static_cast<Mesh::size_type>(le));
     const VI u = m.source(m.halfedge(e)), v = m.target(m.halfedge(e));
     if(!std::isfinite(dist[std::size_t(u)]) || !std::isfinite(dist[std::size_t(v)])) { ++B.dropped; continue; }
-    Chain c(ne, 0);
-    for(VI x = u; x != root; x = m.source(parent[std::size_t(x)])) add_traversal(m, c, m.source(parent[std::size_t(x)]), x, 1);
-    add_traversal(m, c, u, v, 1);
-    for(VI x = v; x != root; x = m.source(parent[std::size_t(x)])) add_traversal(m, c, x, m.source(parent[std::size_t(x)]), 1);
+    // the loop LCA -> ... -> u -> v -> ... -> LCA as a cyclic vertex sequence
+    std::vector<VI> up_u{u}, up_v{v};
+    for(VI x = u; x != root; x = m.source(parent[std::size_t(x)])) up_u.push_back(m.source(parent[std::size_t(x)]));
+    for(VI x = v; x != root; x = m.source(parent[std::size_t(x)])) up_v.push_back(m.source(parent[std::size_t(x)]));
+    while(up_u.size() > 1 && up_v.size() > 1 && up_u[up_u.size() - 2] == up_v[up_v.size() - 2]) { up_u.pop_back(); up_v.pop_back(); }
+    std::vector<VI> loop(up_u.rbegin(), up_u.rend());   // LCA ... u
+    loop.insert(loop.end(), up_v.begin(), up_v.end() - 1);   // v ... (before LCA)
+    Chain c = loop_chain(m, loop);
     if(!is_closed(m, c)) { std::cerr << "[gen] internal error: open basis loop\n"; ++B.dropped; continue; }
+    B.loop_vertices.push_back(loop);
     B.loops.push_back(c);
   }
 
@@ -663,8 +774,64 @@ void write_halfedge_chain(const Mesh& m, const Chain& c, const std::string& file
   if(!os) throw std::runtime_error("cannot write " + file);
 }
 
-// Deletion order of the curve edges: runs along the curve, each 1-4 % of the total curve length.
-std::vector<std::pair<std::size_t, double>> deletion_order(const Mesh& m, const Chain& c, Rng& rng, double& total)
+// Deletion order of curve edges: random runs along the curve. `subset` lists the curve edges where the
+// runs start and stay (a connected component of the curve, or all of it); each run has a length
+// uniform in [run_min, run_max] times the subset's length and grows alternately at both ends along
+// curve edges that are not deleted yet. Returns (edge, cumulative deleted length / subset length),
+// up to half of the subset.
+std::vector<std::pair<std::size_t, double>> deletion_order(const Mesh& m, const std::vector<std::size_t>& subset,
+                                                           const std::vector<double>& len,
+                                                           const std::vector<std::vector<std::size_t>>& at,
+                                                           double run_min, double run_max, Rng& rng)
+{
+  double total = 0;
+  for(std::size_t e : subset) total += len[e];
+  std::vector<std::pair<std::size_t, double>> order;
+  std::map<std::size_t, char> deleted;
+  std::set<std::size_t> in_subset(subset.begin(), subset.end());
+  double cum = 0;
+  std::size_t remaining = subset.size();
+  while(remaining > 0 && cum < 0.5 * total)
+  {
+    std::size_t e0;
+    do e0 = subset[rng.index(subset.size())]; while(deleted.count(e0));
+    const double run = rng.uniform(run_min, run_max) * total;
+    double got = 0;
+    const EI ee0(static_cast<Mesh::size_type>(e0));
+    std::size_t ends[2] = {std::size_t(m.vertex(ee0, 0)), std::size_t(m.vertex(ee0, 1))};
+    auto del = [&](std::size_t e) {
+      deleted[e] = 1;
+      --remaining;
+      got += len[e];
+      cum += len[e];
+      order.push_back({e, cum / total});
+    };
+    del(e0);
+    int side = 0, stuck = 0;
+    while(got < run && stuck < 2 && cum < 0.5 * total)
+    {
+      std::size_t& x = ends[side];
+      std::vector<std::size_t> cand;
+      for(std::size_t e : at[x])
+        if(!deleted.count(e) && in_subset.count(e)) cand.push_back(e);
+      if(cand.empty()) { ++stuck; side = 1 - side; continue; }
+      const std::size_t e = cand[rng.index(cand.size())];
+      const EI ee(static_cast<Mesh::size_type>(e));
+      x = std::size_t(m.vertex(ee, 0)) == x ? std::size_t(m.vertex(ee, 1)) : std::size_t(m.vertex(ee, 0));
+      del(e);
+      stuck = 0;
+      side = 1 - side;
+    }
+  }
+  return order;
+}
+
+// Deletion plan of the whole curve: (edge, fraction) pairs; gap level L deletes the edges whose
+// fraction is <= L. mode "per-curve": every connected component of the curve loses the fraction L of
+// its own length (runs of 5-15 % of the component), so no curve disappears entirely; mode "global":
+// runs of 1-4 % of the total curve length anywhere until L of the total is gone.
+std::vector<std::pair<std::size_t, double>> deletion_plan(const Mesh& m, const Chain& c, const std::string& mode, Rng& rng,
+                                                          double& total)
 {
   const std::size_t ne = m.number_of_edges();
   std::vector<double> len(ne, 0);
@@ -680,47 +847,43 @@ std::vector<std::pair<std::size_t, double>> deletion_order(const Mesh& m, const 
       at[std::size_t(m.vertex(e, 0))].push_back(std::size_t(e));
       at[std::size_t(m.vertex(e, 1))].push_back(std::size_t(e));
     }
-  std::vector<std::pair<std::size_t, double>> order;   // edge, cumulative deleted length
-  std::vector<char> deleted(ne, 0);
-  double cum = 0;
-  std::size_t remaining = curve.size();
-  while(remaining > 0 && cum < 0.5 * total)
+  if(curve.empty()) return {};
+  if(mode == "global") return deletion_order(m, curve, len, at, 0.01, 0.04, rng);
+  // connected components of the curve (edges sharing a vertex)
+  std::map<std::size_t, std::size_t> comp;
+  std::vector<std::vector<std::size_t>> comps;
+  for(std::size_t e0 : curve)
   {
-    std::size_t e0;
-    do e0 = curve[rng.index(curve.size())]; while(deleted[e0]);
-    const double run = rng.uniform(0.01, 0.04) * total;
-    double got = 0;
-    // grow in both directions from e0
-    std::vector<std::size_t> ends = {std::size_t(m.vertex(EI(Mesh::size_type(e0)), 0)), std::size_t(m.vertex(EI(Mesh::size_type(e0)), 1))};
-    auto del = [&](std::size_t e) {
-      deleted[e] = 1;
-      --remaining;
-      got += len[e];
-      cum += len[e];
-      order.push_back({e, cum});
-    };
-    del(e0);
-    int side = 0, stuck = 0;
-    while(got < run && stuck < 2)
+    if(comp.count(e0)) continue;
+    comps.emplace_back();
+    std::vector<std::size_t> stack{e0};
+    comp[e0] = comps.size() - 1;
+    while(!stack.empty())
     {
-      std::size_t& x = ends[side];
-      std::vector<std::size_t> cand;
-      for(std::size_t e : at[x]) if(!deleted[e]) cand.push_back(e);
-      if(cand.empty()) { ++stuck; side = 1 - side; continue; }
-      const std::size_t e = cand[rng.index(cand.size())];
+      const std::size_t e = stack.back();
+      stack.pop_back();
+      comps.back().push_back(e);
       const EI ee(static_cast<Mesh::size_type>(e));
-      x = std::size_t(m.vertex(ee, 0)) == x ? std::size_t(m.vertex(ee, 1)) : std::size_t(m.vertex(ee, 0));
-      del(e);
-      stuck = 0;
-      side = 1 - side;
+      for(int k = 0; k < 2; ++k)
+        for(std::size_t f : at[std::size_t(m.vertex(ee, k))])
+          if(!comp.count(f)) { comp[f] = comps.size() - 1; stack.push_back(f); }
     }
   }
-  return order;
+  std::vector<std::pair<std::size_t, double>> plan;
+  for(auto& cc : comps)
+  {
+    std::sort(cc.begin(), cc.end());
+    const auto o = deletion_order(m, cc, len, at, 0.05, 0.15, rng);
+    plan.insert(plan.end(), o.begin(), o.end());
+  }
+  return plan;
 }
 
 struct Options
 {
   std::string suite = "quick", out, mesh_cache, cgal_data;
+  std::string gap_mode = "per-curve";   // per-curve | global
+  bool straighten = true;
   int shard = 0, nshards = 1;
 };
 
@@ -775,6 +938,8 @@ void generate(const Options& o)
       area[std::size_t(f)] = PMP::face_area(f, m);
       total_area += area[std::size_t(f)];
     }
+    std::vector<double> edge_len(m.number_of_edges());
+    for(EI e : m.edges()) edge_len[std::size_t(e)] = std::sqrt(CGAL::squared_distance(m.point(m.vertex(e, 0)), m.point(m.vertex(e, 1))));
     const auto bb = CGAL::bounding_box(m.points().begin(), m.points().end());
     const double diag = std::sqrt(CGAL::squared_distance(bb.min(), bb.max()));
 
@@ -829,12 +994,21 @@ void generate(const Options& o)
       }
       // planted nonbounding loops
       Chain planted(m.number_of_edges(), 0);
-      int n_loops = 0, n_arcs = 0, basis_size = 0, dropped = 0;
+      int n_loops = 0, n_arcs = 0, basis_size = 0, dropped = 0, straightened = 0;
       bool planted_nontrivial = true;
       if(!topo.simply_connected())
       {
         Basis B = homology_basis(m, rng);
         basis_size = int(B.loops.size() + B.arcs.size());
+        if(o.straighten)
+          for(std::size_t i = 0; i < B.loops.size(); ++i)
+          {
+            const std::vector<VI> sl = straighten_loop(m, B.loop_vertices[i], edge_len, rng);
+            const Chain c2 = loop_chain(m, sl);
+            Chain d(c2.size());
+            for(std::size_t e = 0; e < d.size(); ++e) d[e] = c2[e] - B.loops[i][e];
+            if(is_closed(m, c2) && is_relative_boundary(m, d)) { B.loops[i] = c2; ++straightened; }
+          }
         dropped = B.dropped;
         std::vector<std::pair<int, const Chain*>> all;
         for(const Chain& c : B.loops) all.push_back({0, &c});
@@ -856,21 +1030,28 @@ void generate(const Options& o)
       for(std::size_t e = 0; e < full.size(); ++e) full[e] = region[e] + planted[e];
       double curve_length = 0;
       Rng grng(hash_string(spec.name + "/gaps/" + std::to_string(rs)));
-      const auto order = deletion_order(m, full, grng, curve_length);
-      std::size_t curve_edges = 0, planted_edges = 0;
+      const auto plan = deletion_plan(m, full, o.gap_mode, grng, curve_length);
+      std::size_t curve_edges = 0, planted_edges = 0, planted_shared = 0, planted_cancelled = 0;
       for(int v : full) curve_edges += v != 0;
-      for(int v : planted) planted_edges += v != 0;
+      for(std::size_t e = 0; e < planted.size(); ++e)
+        if(planted[e] != 0)
+        {
+          ++planted_edges;
+          planted_shared += region[e] != 0;
+          planted_cancelled += full[e] == 0;
+        }
 
       for(double gap : suite.gaps)
       {
         Chain c = full;
         double removed = 0;
-        for(const auto& [e, cum] : order)
-        {
-          if(cum > gap * curve_length + 1e-12) break;
-          c[e] = 0;
-          removed = cum;
-        }
+        for(const auto& [e, frac] : plan)
+          if(frac <= gap + 1e-12)
+          {
+            c[e] = 0;
+            removed += std::sqrt(CGAL::squared_distance(m.point(m.vertex(EI(Mesh::size_type(e)), 0)),
+                                                        m.point(m.vertex(EI(Mesh::size_type(e)), 1))));
+          }
         std::ostringstream id;
         id << spec.name << "_r" << rs << "_g" << std::setw(2) << std::setfill('0') << int(std::lround(gap * 100));
         const std::string dir = fs::absolute(o.out + "/cases/" + id.str()).string();
@@ -894,7 +1075,9 @@ void generate(const Options& o)
            << ", \"max_gt_label\": " << *std::max_element(gt.begin(), gt.end())
            << ", \"planted_loops\": " << n_loops << ", \"planted_arcs\": " << n_arcs
            << ", \"planted_edges\": " << planted_edges << ", \"basis_size\": " << basis_size
-           << ", \"basis_dropped\": " << dropped
+           << ", \"basis_dropped\": " << dropped << ", \"loops_straightened\": " << straightened
+           << ", \"planted_shared_edges\": " << planted_shared << ", \"planted_cancelled_edges\": " << planted_cancelled
+           << ", \"gap_mode\": \"" << o.gap_mode << "\", \"straighten\": " << (o.straighten ? "true" : "false")
            << ", \"planted_nontrivial\": " << (planted_nontrivial ? "true" : "false") << "}\n";
         index << id.str() << '\t' << dir << '\n';
       }
@@ -945,6 +1128,8 @@ int main(int argc, char** argv)
         o.nshards = std::stoi(s.substr(slash + 1));
         if(o.nshards < 1 || o.shard < 0 || o.shard >= o.nshards) throw std::runtime_error("bad --shard " + s);
       }
+      else if(a == "--gaps") { o.gap_mode = next(); if(o.gap_mode != "per-curve" && o.gap_mode != "global") throw std::runtime_error("--gaps per-curve|global"); }
+      else if(a == "--straighten") { const std::string v = next(); if(v != "on" && v != "off") throw std::runtime_error("--straighten on|off"); o.straighten = v == "on"; }
       else if(a == "--info") info_mode = true;
       else if(info_mode) info_files.push_back(a);
       else throw std::runtime_error("unknown argument " + a);
