@@ -1,0 +1,605 @@
+// The exact residual solver (LEMON network flows) against GLPK's simplex: random residual problems
+// on dual graphs of grids (torus, disk, several components), real instances from the pipeline, and
+// whole solves.
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/surface_winding_numbers.h>
+#include <CGAL/Surface_winding_numbers/GLPK_linear_program_traits.h>
+#include <CGAL/Surface_winding_numbers/LEMON_residual_solver.h>
+#include <CGAL/Surface_winding_numbers/internal/pipeline.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <map>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace {
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+typedef Mesh::Vertex_index Vertex;
+namespace SWN = CGAL::Surface_winding_numbers;
+namespace SI = CGAL::Surface_winding_numbers::internal;
+typedef SI::Default_sparse_solver LA;
+typedef SWN::LEMON_residual_solver Lemon;
+
+const double inf = std::numeric_limits<double>::infinity();
+
+// ---------------------------------------------------------------------------------------------
+// Random residual problems on the dual graph of an nu x nv grid of quads cut into two triangles
+// (T0 below the diagonal, T1 above). Periodic in both directions (torus) or not (disk, whose
+// border edges are no arcs). Every arc is oriented with its left face "above" (horizontal edges),
+// "left" (vertical edges) or T1 (diagonals), so a cochain that is constant on a row of
+// horizontal edges is closed.
+struct Grid
+{
+  int nu, nv;
+  bool periodic;
+  std::size_t face0;   // index of the first face in the problem
+  std::size_t T(int k, int i, int j) const { return face0 + 2 * (std::size_t(j) * nu + std::size_t(i)) + std::size_t(k); }
+  std::size_t faces() const { return 2 * std::size_t(nu) * std::size_t(nv); }
+};
+
+enum Edge_kind { HORIZONTAL, VERTICAL, DIAGONAL };
+
+struct Grid_arc
+{
+  Edge_kind kind;
+  int i, j;   // horizontal: edge (i,j)-(i+1,j); vertical: (i,j)-(i,j+1); diagonal: cell (i,j)
+};
+
+// appends the arcs of grid g to P (s, cost, bounds left free/zero) and returns their grid positions
+std::vector<Grid_arc> add_grid_arcs(const Grid& g, SWN::Residual_problem& P)
+{
+  std::vector<Grid_arc> pos;
+  auto add = [&](std::size_t L, std::size_t R, Grid_arc a) {
+    P.left.push_back(L); P.right.push_back(R); P.s.push_back(0.); P.cost.push_back(1.);
+    P.lower.push_back(-inf); P.upper.push_back(inf);
+    pos.push_back(a);
+  };
+  for(int j = 0; j < g.nv; ++j)
+    for(int i = 0; i < g.nu; ++i)
+    {
+      add(g.T(1, i, j), g.T(0, i, j), {DIAGONAL, i, j});
+      // horizontal edge at the bottom of cell (i,j): above T0(i,j), below T1(i,j-1)
+      if(j > 0 || g.periodic) add(g.T(0, i, j), g.T(1, i, (j + g.nv - 1) % g.nv), {HORIZONTAL, i, j});
+      // vertical edge at the left of cell (i,j): right of it T1(i,j), left T0(i-1,j)
+      if(i > 0 || g.periodic) add(g.T(0, (i + g.nu - 1) % g.nu, j), g.T(1, i, j), {VERTICAL, i, j});
+    }
+  return pos;
+}
+
+struct Random_problem
+{
+  SWN::Residual_problem P;
+  std::vector<std::size_t> bounded;   // arcs with finite bounds
+};
+
+// closed_s: s = differences of a random potential + periods on the rows j = 0 and columns i = 0
+// (like real data); otherwise s is chosen so that a random sigma* with |sigma*| <= s_scale / 2 is
+// feasible (s up to about s_scale, not closed).
+// Curve arcs: a horizontal and a vertical loop with gaps, and a contractible rectangle, with
+// multiplicities up to 3 and random orientations: bounds [0, G] or [G, 0].
+void randomize(Random_problem& rp, const Grid& g, const std::vector<Grid_arc>& pos, std::size_t first_arc,
+               std::mt19937& rng, bool closed_s, double s_scale)
+{
+  SWN::Residual_problem& P = rp.P;
+  std::uniform_real_distribution<double> U01(0., 1.);
+  std::uniform_int_distribution<int> mult(1, 3), coin(0, 1);
+  const double eps = 0.01;
+  std::vector<double> phi(g.faces());
+  for(double& x : phi) x = s_scale * (U01(rng) - 0.5);
+  const double alpha = (U01(rng) - 0.5) * 3, beta = (U01(rng) - 0.5) * 3;
+  const int row = int(rng() % unsigned(g.nv)), col = int(rng() % unsigned(g.nu));
+  const int G_row = (coin(rng) ? 1 : -1) * mult(rng), G_col = (coin(rng) ? 1 : -1) * mult(rng);
+  const int i0 = int(rng() % unsigned(g.nu)), j0 = int(rng() % unsigned(g.nv));
+  const int w = 2 + int(rng() % 3u), h = 2 + int(rng() % 3u);
+  const int G_rect = (coin(rng) ? 1 : -1) * mult(rng);
+  for(std::size_t k = 0; k < pos.size(); ++k)
+  {
+    const std::size_t a = first_arc + k;
+    const Grid_arc& e = pos[k];
+    const double len = 0.5 + U01(rng);
+    P.cost[a] = len;
+    // curve membership
+    int G = 0;
+    const bool gap = U01(rng) < 0.2;
+    if(!gap)
+    {
+      if(e.kind == HORIZONTAL && e.j == row && g.periodic) G += G_row;   // edges along row `row` are crossed vertically
+      if(e.kind == VERTICAL && e.i == col && g.periodic) G += G_col;
+      // rectangle [i0, i0+w] x [j0, j0+h] (no wrap): its horizontal sides and vertical sides
+      if(e.kind == HORIZONTAL && (e.j == j0 || e.j == j0 + h) && e.i >= i0 && e.i < i0 + w && j0 + h < g.nv && i0 + w < g.nu)
+        G += e.j == j0 ? G_rect : -G_rect;
+      if(e.kind == VERTICAL && (e.i == i0 || e.i == i0 + w) && e.j >= j0 && e.j < j0 + h && j0 + h < g.nv && i0 + w < g.nu)
+        G += e.i == i0 ? -G_rect : G_rect;
+    }
+    const std::size_t L = P.left[a] - g.face0, R = P.right[a] - g.face0;
+    if(G != 0)
+    {
+      P.cost[a] = eps * len;
+      P.lower[a] = std::min(0, G);
+      P.upper[a] = std::max(0, G);
+      rp.bounded.push_back(a);
+    }
+    if(closed_s)
+    {
+      double period = 0;
+      if(g.periodic && e.kind == HORIZONTAL && e.j == 0) period += alpha;
+      if(g.periodic && e.kind == VERTICAL && e.i == 0) period += beta;
+      P.s[a] = phi[R] - phi[L] + period;
+    }
+    else
+    {
+      // J* within the bounds (or anywhere near 0 on free arcs) for sigma = phi
+      const double Jstar = G != 0 ? G * U01(rng) : (U01(rng) - 0.5);
+      P.s[a] = Jstar - phi[L] + phi[R];
+    }
+  }
+}
+
+Random_problem random_problem(unsigned seed, bool closed_s, double s_scale, bool several_components)
+{
+  std::mt19937 rng(seed);
+  Random_problem rp;
+  std::vector<Grid> grids;
+  grids.push_back(Grid{8 + int(rng() % 8u), 6 + int(rng() % 8u), true, 0});
+  if(several_components)
+  {
+    grids.push_back(Grid{6 + int(rng() % 6u), 5 + int(rng() % 6u), false, 0});
+    grids.push_back(Grid{7, 5, true, 0});
+  }
+  std::size_t nf = 0;
+  for(Grid& g : grids) { g.face0 = nf; nf += g.faces(); }
+  rp.P.number_of_faces = nf + (several_components ? 1 : 0);   // plus an isolated face
+  for(const Grid& g : grids)
+  {
+    const std::size_t first = rp.P.number_of_arcs();
+    const std::vector<Grid_arc> pos = add_grid_arcs(g, rp.P);
+    randomize(rp, g, pos, first, rng, closed_s, s_scale);
+    rp.P.gauge_faces.push_back(g.face0 + rng() % g.faces());
+  }
+  if(several_components) rp.P.gauge_faces.push_back(nf);
+  return rp;
+}
+
+// GLPK's optimum (through the package's LP formulation) and its objective
+double glpk_optimum(const SWN::Residual_problem& P, std::vector<double>& sigma)
+{
+  SWN::GLPK_linear_program_traits lp;
+  double objective = 0;
+  std::size_t nv = 0, nr = 0;
+  sigma = SI::solve_residual_with_lp(P, lp, nv, nr);
+  objective = P.objective(sigma);
+  return objective;
+}
+
+// LEMON's sigma is feasible and optimal: its objective equals GLPK's optimum to 1e-7 relative and
+// is never larger; gauge faces get 0
+void expect_matches_glpk(const SWN::Residual_problem& P, Lemon::Algorithm algorithm, const std::string& what,
+                         double* lemon_objective = nullptr)
+{
+  Lemon lemon(algorithm);
+  std::vector<double> sigma;
+  ASSERT_TRUE(lemon.solve_residual(P, sigma)) << what << ": " << lemon.error();
+  ASSERT_EQ(sigma.size(), P.number_of_faces);
+  EXPECT_TRUE(lemon.error().empty());
+  EXPECT_TRUE(lemon.statistics().certified) << what;
+  EXPECT_LE(P.max_violation(sigma), 1e-9) << what;
+  std::vector<double> sigma_glpk;
+  const double og = glpk_optimum(P, sigma_glpk);
+  const double ol = P.objective(sigma);
+  EXPECT_NEAR(ol, lemon.statistics().objective, 1e-12 * (1 + ol));
+  EXPECT_NEAR(ol, og, 1e-7 * (1 + og)) << what << " (lemon " << ol << ", glpk " << og << ")";
+  EXPECT_LE(ol, og + 1e-7 * (1 + og)) << what;
+  for(std::size_t f : P.gauge_faces)
+    if(f < sigma.size()) EXPECT_EQ(sigma[f], 0.) << what;
+  if(lemon_objective) *lemon_objective = ol;
+}
+
+const Lemon::Algorithm all_algorithms[] = {Lemon::COST_SCALING_PUSH, Lemon::COST_SCALING_AUGMENT,
+                                          Lemon::COST_SCALING_PARTIAL_AUGMENT, Lemon::NETWORK_SIMPLEX};
+
+// ---------------------------------------------------------------------------------------------
+// meshes
+
+std::vector<Vertex> torus_mesh(Mesh& m, int nu, int nv, double R = 1, double r = 0.4, double x0 = 0)
+{
+  const double pi = 3.14159265358979323846;
+  std::vector<Vertex> vs;
+  for(int i = 0; i < nu; ++i)
+    for(int j = 0; j < nv; ++j)
+    {
+      const double a = 2 * pi * i / nu, b = 2 * pi * j / nv;
+      vs.push_back(m.add_vertex(K::Point_3(x0 + (R + r * std::cos(b)) * std::cos(a), (R + r * std::cos(b)) * std::sin(a), r * std::sin(b))));
+    }
+  auto V = [&](int i, int j) { return vs[std::size_t(((i % nu + nu) % nu) * nv + (j % nv + nv) % nv)]; };
+  for(int i = 0; i < nu; ++i)
+    for(int j = 0; j < nv; ++j) { m.add_face(V(i, j), V(i + 1, j), V(i + 1, j + 1)); m.add_face(V(i, j), V(i + 1, j + 1), V(i, j + 1)); }
+  return vs;
+}
+
+// broken meridian (two pieces) + broken contractible loop on an nu x nv torus starting at vertex vs[0]
+std::vector<std::vector<Vertex>> broken_curves(const std::vector<Vertex>& vs, int nv, int i_meridian, int i_loop)
+{
+  std::vector<Vertex> a, b, loop;
+  for(int j = 0; j <= 3; ++j) a.push_back(vs[std::size_t(i_meridian * nv + j)]);
+  for(int j = 5; j <= nv; ++j) b.push_back(vs[std::size_t(i_meridian * nv + j % nv)]);
+  for(int i = i_loop; i <= i_loop + 4; ++i) loop.push_back(vs[std::size_t(i * nv + 2)]);
+  for(int j = 3; j <= 5; ++j) loop.push_back(vs[std::size_t((i_loop + 4) * nv + j)]);
+  for(int i = i_loop + 3; i >= i_loop + 1; --i) loop.push_back(vs[std::size_t(i * nv + 5)]);
+  return {a, b, loop};
+}
+
+// the residual problem of the pipeline for the curves `polylines` (steps as in the solver)
+SWN::Residual_problem pipeline_problem(const Mesh& m, const std::vector<std::vector<Vertex>>& polylines, double epsilon = 0.01)
+{
+  SWN::Surface_winding_numbers_solver<Mesh> solver(m);
+  EXPECT_TRUE(solver.is_valid());
+  const SI::Mesh_tables& t = solver.tables();
+  auto map = get(CGAL::dynamic_edge_property_t<int>(), m);
+  for(auto e : edges(m)) put(map, e, 0);
+  for(const auto& p : polylines) EXPECT_TRUE(SWN::add_vertex_polyline_to_chain(m, p, map));
+  std::vector<double> chain(num_edges(m), 0.);
+  for(auto e : edges(m)) chain[solver.edge_index(e)] = get(map, e);
+  const std::vector<char> endpoint = SI::interior_endpoints(t, chain);
+  std::vector<double> w;
+  SI::cotan_weights(t, w);
+  SI::Jump_laplace_system<LA> L;
+  L.jump_laplacian(t, w, endpoint);
+  const std::vector<double> u = L.solve_jump_laplace(SI::reduced_coordinates(t, SI::arc_jumps_from_chain(t, chain), endpoint));
+  SI::Two_form_laplacian<LA> B;
+  const std::vector<double> star = SI::edge_hodge_star(t, w);
+  B.assemble(t, star);
+  std::vector<double> gamma = SI::darboux_derivative(t, u, endpoint);
+  gamma = B.harmonic_part(gamma);
+  const std::vector<double> v0 = SI::local_integration(t, gamma);
+  return SI::residual_problem(t, v0, chain, epsilon);
+}
+
+} // namespace
+
+// ---------------------------------------------------------------------------------------------
+
+TEST(LemonResidual, NameAndDefaults)
+{
+  EXPECT_STREQ(Lemon::name(), "lemon");
+  Lemon l;
+  EXPECT_EQ(l.algorithm(), Lemon::default_algorithm());
+  EXPECT_TRUE(l.error().empty());
+  static_assert(SI::is_residual_solver<Lemon>::value, "LEMON_residual_solver models SurfaceWindingNumbersResidualSolver");
+  static_assert(!std::is_copy_constructible<Lemon>::value, "not copyable");
+#ifdef CGAL_SWN_USE_LEMON
+  static_assert(std::is_same<SI::Default_linear_program_traits, Lemon>::value, "LEMON is the default residual solver");
+#endif
+}
+
+TEST(LemonResidual, RandomClosedProblemsMatchGLPK)
+{
+  for(unsigned seed = 1; seed <= 12; ++seed)
+  {
+    const Random_problem rp = random_problem(seed, true, 10., seed % 3 == 0);
+    ASSERT_FALSE(rp.bounded.empty());
+    expect_matches_glpk(rp.P, all_algorithms[seed % 4], "closed s, seed " + std::to_string(seed));
+  }
+}
+
+TEST(LemonResidual, RandomNonClosedProblemsWithLargeSMatchGLPK)
+{
+  for(unsigned seed = 1; seed <= 12; ++seed)
+  {
+    const Random_problem rp = random_problem(100 + seed, false, 1000., seed % 2 == 0);
+    double smax = 0;
+    for(double s : rp.P.s) smax = std::max(smax, std::abs(s));
+    EXPECT_GT(smax, 100.);
+    expect_matches_glpk(rp.P, all_algorithms[seed % 4], "non-closed s, seed " + std::to_string(seed));
+  }
+}
+
+TEST(LemonResidual, AllAlgorithmsAgree)
+{
+  for(unsigned seed = 1; seed <= 4; ++seed)
+  {
+    const Random_problem rp = random_problem(200 + seed, seed % 2 == 0, seed % 2 == 0 ? 5. : 500., true);
+    std::vector<double> objectives;
+    for(Lemon::Algorithm a : all_algorithms)
+    {
+      Lemon lemon(a);
+      lemon.set_fallback(false);
+      std::vector<double> sigma;
+      ASSERT_TRUE(lemon.solve_residual(rp.P, sigma)) << lemon.error();
+      EXPECT_EQ(lemon.statistics().algorithm, a);
+      EXPECT_FALSE(lemon.statistics().fallback);
+      EXPECT_LE(rp.P.max_violation(sigma), 1e-9);
+      objectives.push_back(rp.P.objective(sigma));
+    }
+    for(double o : objectives) EXPECT_NEAR(o, objectives[0], 1e-10 * (1 + objectives[0]));
+  }
+}
+
+TEST(LemonResidual, BoundsWithMultiplicityAndInfiniteBounds)
+{
+  // a cycle of 4 faces: three free arcs and one arc with bounds [G, 0] or [0, G]; the period of s
+  // around the cycle forces a total jump, which goes to the cheap bounded arc as long as it fits
+  for(double G : {-3., -2., 2., 3.})
+    for(double period : {-2.5, -1.5, 1.5, 2.5, 0.4})
+    {
+      SWN::Residual_problem P;
+      P.number_of_faces = 4;
+      P.left = {0, 1, 2, 3};
+      P.right = {1, 2, 3, 0};
+      P.s = {0.3, -0.1, 0.2, period - 0.4};   // sum = period
+      P.cost = {1., 1., 1., 0.01};
+      P.lower = {-inf, -inf, -inf, std::min(0., G)};
+      P.upper = {inf, inf, inf, std::max(0., G)};
+      P.gauge_faces = {2};
+      // the jumps sum to the period: J3 takes clamp(period, [lower, upper]), the rest goes on one free arc
+      const double J3 = std::min(std::max(period, P.lower[3]), P.upper[3]);
+      const double expected = 0.01 * std::abs(J3) + std::abs(period - J3);
+      for(Lemon::Algorithm a : all_algorithms)
+      {
+        Lemon lemon(a);
+        std::vector<double> sigma;
+        ASSERT_TRUE(lemon.solve_residual(P, sigma)) << lemon.error();
+        EXPECT_NEAR(P.objective(sigma), expected, 1e-11) << "G " << G << " period " << period;
+        EXPECT_LE(P.max_violation(sigma), 1e-12);
+        EXPECT_EQ(sigma[2], 0.);
+      }
+      expect_matches_glpk(P, Lemon::NETWORK_SIMPLEX, "cycle");
+    }
+}
+
+TEST(LemonResidual, OneSidedBoundsAndZeroCosts)
+{
+  std::mt19937 rng(7);
+  for(int rep = 0; rep < 6; ++rep)
+  {
+    Random_problem rp = random_problem(300 + rep, rep % 2 == 0, 20., rep % 3 == 0);
+    std::uniform_real_distribution<double> U01(0., 1.);
+    for(std::size_t a = 0; a < rp.P.number_of_arcs(); ++a)
+    {
+      if(rp.P.is_bounded(a)) continue;
+      const double r = U01(rng);
+      if(r < 0.05) { rp.P.lower[a] = 0; }                       // [0, inf)
+      else if(r < 0.1) { rp.P.upper[a] = 0; }                   // (-inf, 0]
+      else if(r < 0.13) { rp.P.cost[a] = 0; }                   // free and weightless
+      // keep feasibility: these are only forced if the jump of a feasible sigma allows; GLPK decides
+    }
+    // skip infeasible instances (GLPK says so); otherwise both agree
+    SWN::GLPK_linear_program_traits lp;
+    std::size_t nv = 0, nr = 0;
+    std::vector<double> sg;
+    bool feasible = true;
+    try { sg = SI::solve_residual_with_lp(rp.P, lp, nv, nr); }
+    catch(const SWN::Solver_failure&) { feasible = false; }
+    Lemon lemon;
+    std::vector<double> sigma;
+    const bool ok = lemon.solve_residual(rp.P, sigma);
+    EXPECT_EQ(ok, feasible) << lemon.error();
+    if(feasible) expect_matches_glpk(rp.P, Lemon::COST_SCALING_PUSH, "one-sided bounds " + std::to_string(rep));
+  }
+}
+
+TEST(LemonResidual, FixedArcsAreContracted)
+{
+  // closed s on a torus grid; a few arcs get a fixed nonzero jump
+  for(unsigned seed = 1; seed <= 4; ++seed)
+  {
+    Random_problem rp = random_problem(400 + seed, true, 10., false);
+    SWN::Residual_problem& P = rp.P;
+    const std::size_t na = P.number_of_arcs();
+    // on a periodic grid every cell has three consecutive arcs, its diagonal first: fix the diagonal
+    // of every 7th cell to the jump 0.25 (disjoint face pairs: never a cycle)
+    std::size_t fixed = 0;
+    for(std::size_t a = 0; a < na; a += 3)
+    {
+      if((a / 3) % 7 != 3) continue;
+      P.lower[a] = P.upper[a] = 0.25;
+      ++fixed;
+    }
+    ASSERT_GT(fixed, 0u);
+    Lemon lemon;
+    std::vector<double> sigma;
+    ASSERT_TRUE(lemon.solve_residual(P, sigma)) << lemon.error();
+    EXPECT_EQ(lemon.statistics().fixed_arcs, fixed);
+    EXPECT_EQ(lemon.statistics().nodes, P.number_of_faces - fixed);
+    expect_matches_glpk(P, Lemon::COST_SCALING_PUSH, "fixed arcs, seed " + std::to_string(seed));
+  }
+}
+
+TEST(LemonResidual, FixedCycles)
+{
+  // a triangle of faces with all three arcs fixed: consistent iff the fixed jumps match s around it
+  SWN::Residual_problem P;
+  P.number_of_faces = 4;
+  P.left = {0, 1, 2, 2};
+  P.right = {1, 2, 0, 3};
+  P.s = {0.5, 0.25, -0.75, 0.1};   // sum 0
+  P.cost = {1, 1, 1, 1};
+  P.lower = {0, 0, 0, -inf};
+  P.upper = {0, 0, 0, inf};
+  P.gauge_faces = {0};
+  Lemon lemon;
+  std::vector<double> sigma;
+  ASSERT_TRUE(lemon.solve_residual(P, sigma)) << lemon.error();
+  EXPECT_LE(P.max_violation(sigma), 1e-12);
+  EXPECT_NEAR(P.objective(sigma), 0., 1e-12);
+  EXPECT_EQ(lemon.statistics().nodes, 2u);
+  EXPECT_EQ(sigma[0], 0.);
+  // an arc between two merged faces has a constant jump: fine if within its bounds
+  P.left.push_back(1); P.right.push_back(0); P.s.push_back(0.7); P.cost.push_back(2.);
+  P.lower.push_back(0.); P.upper.push_back(2.);
+  ASSERT_TRUE(lemon.solve_residual(P, sigma)) << lemon.error();
+  EXPECT_EQ(lemon.statistics().constant_arcs, 1u);
+  EXPECT_NEAR(P.objective(sigma), 2 * 1.2, 1e-12);   // sigma1 - sigma0 = 0.5 (first arc), J = 0.7 + 0.5
+  // ... and infeasible if not
+  P.upper.back() = 1.;
+  EXPECT_FALSE(lemon.solve_residual(P, sigma));
+  EXPECT_NE(lemon.error().find("infeasible"), std::string::npos) << lemon.error();
+  P.upper.back() = 2.;
+  // contradicting fixed arcs
+  P.s[0] = 0.6;
+  EXPECT_FALSE(lemon.solve_residual(P, sigma));
+  EXPECT_NE(lemon.error().find("contradict"), std::string::npos) << lemon.error();
+}
+
+TEST(LemonResidual, InfeasibleProblemFailsWithAReason)
+{
+  // a cycle of bounded arcs whose period does not fit: J0 + J1 + J2 = period with J in [0, 1] each
+  SWN::Residual_problem P;
+  P.number_of_faces = 3;
+  P.left = {0, 1, 2};
+  P.right = {1, 2, 0};
+  P.s = {1., 1., 1.5};   // period 3.5 > 3
+  P.cost = {1, 1, 1};
+  P.lower = {0, 0, 0};
+  P.upper = {1, 1, 1};
+  P.gauge_faces = {0};
+  for(Lemon::Algorithm a : all_algorithms)
+  {
+    Lemon lemon(a);
+    std::vector<double> sigma;
+    EXPECT_FALSE(lemon.solve_residual(P, sigma));
+    EXPECT_NE(lemon.error().find("infeasible"), std::string::npos) << lemon.error();
+    ASSERT_EQ(sigma.size(), 3u);   // the least-violation solution
+    EXPECT_GT(lemon.statistics().max_violation, 0.1);
+  }
+  P.s[2] = 0.5;   // period 2.5: feasible
+  Lemon lemon;
+  std::vector<double> sigma;
+  EXPECT_TRUE(lemon.solve_residual(P, sigma)) << lemon.error();
+  EXPECT_NEAR(P.objective(sigma), 2.5, 1e-12);
+}
+
+TEST(LemonResidual, EmptyAndTrivialProblems)
+{
+  Lemon lemon;
+  std::vector<double> sigma = {1, 2, 3};
+  SWN::Residual_problem P;
+  ASSERT_TRUE(lemon.solve_residual(P, sigma)) << lemon.error();
+  EXPECT_TRUE(sigma.empty());
+  P.number_of_faces = 5;
+  P.gauge_faces = {0, 3};
+  ASSERT_TRUE(lemon.solve_residual(P, sigma)) << lemon.error();
+  EXPECT_EQ(sigma, std::vector<double>(5, 0.));
+  // one free arc: optimum 0
+  P.left = {1}; P.right = {2}; P.s = {123.456}; P.cost = {1.}; P.lower = {-inf}; P.upper = {inf};
+  ASSERT_TRUE(lemon.solve_residual(P, sigma)) << lemon.error();
+  EXPECT_NEAR(P.objective(sigma), 0., 1e-12);
+  // an arc from a face to itself: constant jump
+  P.left = {1}; P.right = {1}; P.s = {0.5}; P.lower = {0}; P.upper = {1};
+  ASSERT_TRUE(lemon.solve_residual(P, sigma)) << lemon.error();
+  EXPECT_NEAR(P.objective(sigma), 0.5, 1e-15);
+}
+
+TEST(LemonResidual, MalformedProblemsFailWithoutAborting)
+{
+  const Random_problem good = random_problem(5, true, 1., false);
+  auto expect_fail = [](const SWN::Residual_problem& P, const char* what) {
+    Lemon lemon;
+    std::vector<double> sigma;
+    EXPECT_FALSE(lemon.solve_residual(P, sigma)) << what;
+    EXPECT_FALSE(lemon.error().empty()) << what;
+  };
+  SWN::Residual_problem P = good.P;
+  P.s.pop_back();
+  expect_fail(P, "sizes");
+  P = good.P; P.right[3] = P.number_of_faces;
+  expect_fail(P, "face index");
+  P = good.P; P.cost[2] = -1;
+  expect_fail(P, "negative cost");
+  P = good.P; P.cost[2] = std::numeric_limits<double>::quiet_NaN();
+  expect_fail(P, "NaN cost");
+  P = good.P; P.s[2] = inf;
+  expect_fail(P, "infinite s");
+  P = good.P; P.lower[2] = 1; P.upper[2] = 0;
+  expect_fail(P, "empty bounds");
+  P = good.P; P.lower[2] = inf;
+  expect_fail(P, "lower = +inf");
+  P = good.P; P.gauge_faces.push_back(P.number_of_faces);
+  expect_fail(P, "gauge face");
+  P = good.P; P.s[2] = 1e300;
+  expect_fail(P, "huge s");
+}
+
+TEST(LemonResidual, PipelineInstancesMatchGLPK)
+{
+  {
+    Mesh m;
+    const int nu = 20, nv = 10;
+    auto vs = torus_mesh(m, nu, nv);
+    const SWN::Residual_problem P = pipeline_problem(m, broken_curves(vs, nv, 2, 8));
+    for(Lemon::Algorithm a : all_algorithms) expect_matches_glpk(P, a, "torus 20x10, broken meridian + broken loop");
+  }
+  {
+    // finer torus, two broken curves, and a second torus: two components
+    Mesh m;
+    const int nu = 36, nv = 16;
+    auto vs = torus_mesh(m, nu, nv);
+    auto vs2 = torus_mesh(m, 24, 12, 1.2, 0.5, 5.);
+    auto curves = broken_curves(vs, nv, 4, 15);
+    for(auto& c : broken_curves(vs2, 12, 10, 3)) curves.push_back(c);
+    const SWN::Residual_problem P = pipeline_problem(m, curves);
+    EXPECT_EQ(P.gauge_faces.size(), 2u);
+    double o = 0;
+    expect_matches_glpk(P, Lemon::COST_SCALING_PUSH, "two tori", &o);
+    EXPECT_GT(o, 0.);
+  }
+}
+
+TEST(LemonResidual, WholeSolveGivesTheSameLabelsAsGLPK)
+{
+  auto compare = [](const Mesh& m, const std::vector<std::vector<Vertex>>& polylines, const std::string& what) {
+    auto chain = get(CGAL::dynamic_edge_property_t<int>(), m);
+    for(auto e : edges(m)) put(chain, e, 0);
+    for(const auto& p : polylines) ASSERT_TRUE(SWN::add_vertex_polyline_to_chain(m, p, chain));
+    std::map<Mesh::Face_index, int> l1, l2;
+    std::map<Mesh::Edge_index, int> G1, G2;
+    Lemon lemon;
+    SWN::GLPK_linear_program_traits glpk;
+    SWN::Solve_report r1, r2;
+    ASSERT_TRUE(CGAL::surface_winding_numbers(m, chain, boost::make_assoc_property_map(l1),
+                                              SWN::parameters::lp_solver(std::ref(lemon),
+                                              SWN::parameters::report(std::ref(r1),
+                                              SWN::parameters::nonbounding_chain_map(boost::make_assoc_property_map(G1))))))
+      << what << ": " << r1.error;
+    ASSERT_TRUE(CGAL::surface_winding_numbers(m, chain, boost::make_assoc_property_map(l2),
+                                              SWN::parameters::lp_solver(std::ref(glpk),
+                                              SWN::parameters::report(std::ref(r2),
+                                              SWN::parameters::nonbounding_chain_map(boost::make_assoc_property_map(G2))))))
+      << what << ": " << r2.error;
+    EXPECT_TRUE(r1.lp_ran) << what;
+    EXPECT_NEAR(r1.lp_objective, r2.lp_objective, 1e-7 * (1 + r2.lp_objective)) << what;
+    EXPECT_EQ(l1, l2) << what;
+    EXPECT_EQ(G1, G2) << what;
+    int nG = 0;
+    for(const auto& g : G1) nG += g.second != 0;
+    EXPECT_GT(nG, 0) << what;
+    // the default solver (LEMON when built with it) gives the same result
+    std::map<Mesh::Face_index, int> l3;
+    ASSERT_TRUE(CGAL::surface_winding_numbers(m, chain, boost::make_assoc_property_map(l3))) << what;
+    EXPECT_EQ(l1, l3) << what;
+  };
+  {
+    Mesh m;
+    auto vs = torus_mesh(m, 20, 10);
+    compare(m, broken_curves(vs, 10, 2, 8), "torus 20x10");
+  }
+  {
+    Mesh m;
+    auto vs = torus_mesh(m, 30, 14, 1, 0.35);
+    compare(m, broken_curves(vs, 14, 20, 4), "torus 30x14");
+  }
+  {
+    Mesh m;
+    auto vs = torus_mesh(m, 24, 12);
+    auto vs2 = torus_mesh(m, 16, 8, 1.2, 0.5, 5.);
+    auto curves = broken_curves(vs, 12, 3, 10);
+    for(auto& c : broken_curves(vs2, 8, 5, 9)) curves.push_back(c);
+    compare(m, curves, "two tori");
+  }
+}
