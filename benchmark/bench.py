@@ -27,7 +27,7 @@ COLUMNS = [
     "region_seed", "gap_level", "gap_fraction", "curve_edges_full", "curve_edges", "interior_endpoints",
     "max_gt_label", "planted_loops", "planted_arcs", "planted_edges", "planted_nontrivial",
     "planted_shared_edges", "planted_cancelled_edges", "loops_straightened",
-    "ok", "status", "error", "lp_backend",
+    "ok", "status", "error", "lp_backend", "sparse_solver", "epsilon",
     "error_percent", "naive_error_percent",
     "G_edges", "G_closed", "G_nonzero_in_homology", "G_homologous_to_planted", "G_planted_edges_matched",
     "loops_recovered", "cost_G", "cost_planted",
@@ -45,7 +45,7 @@ def run(cmd, **kw):
 
 def solve_case(args, case_id, case_dir, check_api):
     meta = json.load(open(os.path.join(case_dir, "meta.json")))
-    cmd = [os.path.join(args.build, "swn_bench_solve"), case_dir, meta["mesh_file"], "--lp", args.lp]
+    cmd = [os.path.join(args.build, "swn_bench_solve"), case_dir, meta["mesh_file"], "--lp", args.lp, "--epsilon", str(args.epsilon)]
     if check_api:
         cmd.append("--check-api")
     row = dict(meta)
@@ -251,6 +251,7 @@ def summarize(rows, out, extra):
                 b = sum((p[0] - mx) * (p[1] - my) for p in pts) / sum((p[0] - mx) ** 2 for p in pts)
                 summary["%s_time_vs_faces_exponent" % cls] = b
     summary["lp_backends"] = sorted(set(str(r.get("lp_backend")) for r in ok))
+    summary["sparse_solvers"] = sorted(set(str(r.get("sparse_solver")) for r in ok if r.get("sparse_solver")))
     summary["failures"] = [{"case": r.get("case"), "status": r.get("status"), "error": r.get("error")} for r in rows if not truthy(r.get("ok"))]
     summary["api_match"] = all(truthy(r.get("api_match")) for r in ok if r.get("api_match") is not None)
     summary["machine"] = machine()
@@ -356,6 +357,7 @@ def main():
     ap.add_argument("--jobs", type=int, default=1)
     ap.add_argument("--timeout", type=float, default=1200)
     ap.add_argument("--lp", default="default")
+    ap.add_argument("--epsilon", type=float, default=0.01, help="epsilon of Eq. 11 (the library's default is 0.01)")
     ap.add_argument("--cgal-data", default="")
     ap.add_argument("--mesh-cache", default="")
     ap.add_argument("--command", default="")
@@ -377,7 +379,7 @@ def main():
             rows += read_csv(os.path.join(d, "cases.csv"))
             try:
                 s = json.load(open(os.path.join(d, "summary.json")))
-                for k in ("suite", "command", "git_commit", "wall_time_seconds", "jobs", "gap_mode", "straighten", "lp_option"):
+                for k in ("suite", "command", "git_commit", "wall_time_seconds", "jobs", "gap_mode", "straighten", "lp_option", "epsilon"):
                     if k in s and k not in extra:
                         extra[k] = s[k]
             except OSError:
@@ -420,7 +422,7 @@ def main():
         rows = list(ex.map(one, enumerate(cases)))
     write_csv(os.path.join(out, "cases.csv"), rows)
     extra = {"suite": args.suite, "shard": args.shard, "jobs": args.jobs, "timeout_seconds": args.timeout,
-             "lp_option": args.lp, "gap_mode": args.gaps, "straighten": args.straighten, "command": args.command or " ".join(sys.argv), "git_commit": git_commit(root),
+             "lp_option": args.lp, "epsilon": args.epsilon, "gap_mode": args.gaps, "straighten": args.straighten, "command": args.command or " ".join(sys.argv), "git_commit": git_commit(root),
              "generation_seconds": t_gen, "wall_time_seconds": time.time() - t0}
     s = summarize(rows, out, extra)
     plots(rows, out)

@@ -1,6 +1,6 @@
 // swn_bench_solve: solves one benchmark case in process and prints one JSON line of metrics.
 //
-//   swn_bench_solve CASE_DIR MESH_FILE [--check-api] [--lp default|glpk]
+//   swn_bench_solve CASE_DIR MESH_FILE [--check-api] [--lp default|glpk] [--epsilon X]
 //
 // Reads the mesh and CASE_DIR/curve.txt with the package's readers (IO::read_mesh, IO::read_curve_file,
 // IO::vertex_curve_chain), runs the public API (Surface_winding_numbers_solver::solve with the default
@@ -171,17 +171,19 @@ int main(int argc, char** argv)
 {
   if(argc < 3)
   {
-    std::cerr << "usage: swn_bench_solve CASE_DIR MESH_FILE [--check-api] [--lp default|glpk]\n";
+    std::cerr << "usage: swn_bench_solve CASE_DIR MESH_FILE [--check-api] [--lp default|glpk] [--epsilon X]\n";
     return 2;
   }
   const std::string dir = argv[1], mesh_file = argv[2];
   bool check_api = false;
   std::string lp_name = "default";
+  double epsilon = 0.01;
   for(int i = 3; i < argc; ++i)
   {
     const std::string a = argv[i];
     if(a == "--check-api") check_api = true;
     else if(a == "--lp" && i + 1 < argc) lp_name = argv[++i];
+    else if(a == "--epsilon" && i + 1 < argc) epsilon = std::stod(argv[++i]);
     else { std::cerr << "swn_bench_solve: unknown argument " << a << "\n"; return 2; }
   }
 
@@ -212,13 +214,13 @@ int main(int argc, char** argv)
     bool ok = false;
     std::string lp_backend = SI::Default_linear_program_traits::name();
     if(lp_name == "default")
-      ok = solver.solve(chain, labels, SWN::parameters::nonbounding_chain_map(G, SWN::parameters::report(std::ref(rep))));
+      ok = solver.solve(chain, labels, SWN::parameters::nonbounding_chain_map(G, SWN::parameters::report(std::ref(rep), SWN::parameters::epsilon(epsilon))));
 #ifdef CGAL_USE_GLPK
     else if(lp_name == "glpk")
     {
       SWN::GLPK_linear_program_traits lp;
       lp_backend = lp.name();
-      ok = solver.solve(chain, labels, SWN::parameters::nonbounding_chain_map(G, SWN::parameters::report(std::ref(rep), SWN::parameters::lp_solver(std::ref(lp)))));
+      ok = solver.solve(chain, labels, SWN::parameters::nonbounding_chain_map(G, SWN::parameters::report(std::ref(rep), SWN::parameters::lp_solver(std::ref(lp), SWN::parameters::epsilon(epsilon)))));
     }
 #endif
     else throw std::runtime_error("unknown --lp " + lp_name);
@@ -279,7 +281,7 @@ int main(int argc, char** argv)
     double cost_G = 0, cost_P = 0;
     for(const SI::Arc& a : m.arcs)
     {
-      const double w = m.edge_length(a.edge) / mean_len * (std::abs(chain_t[a.edge]) > 0 ? 0.01 : 1.);
+      const double w = m.edge_length(a.edge) / mean_len * (std::abs(chain_t[a.edge]) > 0 ? epsilon : 1.);
       cost_G += w * std::abs(double(G_t[a.edge]));
       cost_P += w * std::abs(double(P_t[a.edge]));
     }
@@ -294,7 +296,7 @@ int main(int argc, char** argv)
       auto G2 = mesh.add_property_map<Mesh::Edge_index, int>("e:G2", 0).first;
       SWN::Solve_report rep2;
       const auto t_a0 = std::chrono::steady_clock::now();
-      const bool ok2 = CGAL::surface_winding_numbers(mesh, chain, W2, SWN::parameters::nonbounding_chain_map(G2, SWN::parameters::report(std::ref(rep2))));
+      const bool ok2 = CGAL::surface_winding_numbers(mesh, chain, W2, SWN::parameters::nonbounding_chain_map(G2, SWN::parameters::report(std::ref(rep2), SWN::parameters::epsilon(epsilon))));
       t_api = seconds_since(t_a0);
       api_match = ok2 == ok;
       for(auto f : mesh.faces()) api_match = api_match && W2[f] == labels[f];
@@ -303,7 +305,12 @@ int main(int argc, char** argv)
 
     out << "{\"ok\": " << (ok ? "true" : "false");
     if(!ok) out << ", \"error\": \"" << rep.error << "\"";
-    out << ", \"lp_backend\": \"" << lp_backend << "\"";
+    out << ", \"lp_backend\": \"" << lp_backend << "\", \"epsilon\": " << epsilon;
+#ifdef CGAL_SWN_USE_CHOLMOD
+    out << ", \"sparse_solver\": \"cholmod\"";
+#else
+    out << ", \"sparse_solver\": \"eigen-simplicial-ldlt\"";
+#endif
     out << ", \"error_percent\": " << (ok ? error_percent(m, area, W, gt_t) : 100.)
         << ", \"naive_error_percent\": " << error_percent(m, area, naive, gt_t)
         << ", \"components\": " << rep.components << ", \"report_genus\": " << rep.genus

@@ -1,0 +1,158 @@
+#!/usr/bin/env python3
+"""Markdown tables for RESULTS.md from a benchmark result directory (standard library only).
+
+  analyze.py DIR [--label NAME]
+  analyze.py --compare LABEL=DIR...      one line per result directory (ablations)
+
+Prints: headline numbers, errors by gap level, a classification of the cases with handles whose error
+is >= 0.5 %, the effect of planted loops sharing edges with region boundaries, per-mesh numbers and
+timings by size.
+"""
+import argparse
+import csv
+import json
+import os
+import statistics
+
+
+def num(v):
+    try:
+        return float(v)
+    except (TypeError, ValueError):
+        return None
+
+
+def pct(x):
+    return "%.1f %%" % (100 * x)
+
+
+def f3(x):
+    return "-" if x is None else ("%.3f" % x)
+
+
+def compare(items):
+    print("| setting | cases | simply conn. mean / max (%) | handles mean / median (%) | handles < 0.5 % | handles gap 0 < 0.5 % | handles: G ~ planted | naive handles mean (%) |")
+    print("|---|---|---|---|---|---|---|---|")
+    for item in items:
+        label, d = item.split("=", 1)
+        rows = [r for r in csv.DictReader(open(os.path.join(d, "cases.csv"))) if r["ok"] == "1"]
+        g0 = [r for r in rows if r["simply_connected"] == "1"]
+        gh = [r for r in rows if r["simply_connected"] == "0"]
+        e = lambda rs, k="error_percent": [float(r[k]) for r in rs]
+        h0 = [r for r in gh if float(r["gap_level"]) == 0]
+        print("| %s | %d | %.3f / %.2f | %.3f / %.3f | %s | %s | %s | %.3f |" % (
+            label, len(rows), statistics.fmean(e(g0)), max(e(g0)), statistics.fmean(e(gh)), statistics.median(e(gh)),
+            pct(sum(1 for x in e(gh) if x < 0.5) / len(gh)), pct(sum(1 for x in e(h0) if x < 0.5) / len(h0)),
+            pct(sum(1 for r in gh if r["loops_recovered"] == "1") / len(gh)), statistics.fmean(e(gh, "naive_error_percent"))))
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("dir", nargs="?")
+    ap.add_argument("--label", default="")
+    ap.add_argument("--compare", nargs="+")
+    a = ap.parse_args()
+    if a.compare:
+        compare(a.compare)
+        return
+    rows = list(csv.DictReader(open(os.path.join(a.dir, "cases.csv"))))
+    s = json.load(open(os.path.join(a.dir, "summary.json")))
+    ok = [r for r in rows if r["ok"] == "1"]
+    for r in ok:
+        for k in ("error_percent", "naive_error_percent", "gap_level", "time_swn", "time_residual", "faces", "vertices",
+                  "cost_G", "cost_planted", "peak_rss_mb", "time_jump_laplace", "time_second_solve", "time_hodge",
+                  "time_construct", "planted_shared_edges", "planted_cancelled_edges"):
+            r[k] = num(r.get(k))
+    g0 = [r for r in ok if r["simply_connected"] == "1"]
+    gh = [r for r in ok if r["simply_connected"] == "0"]
+
+    def st(rs, k="error_percent"):
+        v = [r[k] for r in rs]
+        if not v:
+            return "-"
+        return "%.3f / %.3f / %.2f / %s" % (statistics.fmean(v), statistics.median(v), max(v),
+                                            pct(sum(1 for x in v if x < 0.5) / len(v)))
+
+    print("### %s\n" % (a.label or a.dir))
+    print("%d cases (%d simply connected, %d with handles), %d failed, %d timed out; LP backend(s): %s; sparse solver(s): %s.\n" % (
+        s["cases"], len(g0), len(gh), s.get("cases_failed", 0), s.get("cases_timeout", 0), ", ".join(s.get("lp_backends", [])),
+        ", ".join(s.get("sparse_solvers", [])) or "not recorded"))
+    print("| class | method | mean / median / max error (%) / share < 0.5 % |")
+    print("|---|---|---|")
+    print("| simply connected | SWN | %s |" % st(g0))
+    print("| simply connected | naive (round u) | %s |" % st(g0, "naive_error_percent"))
+    print("| with handles | SWN | %s |" % st(gh))
+    print("| with handles | naive (round u) | %s |" % st(gh, "naive_error_percent"))
+    print()
+    print("By gap level (mean error %, share of cases < 0.5 %; for handles also the share where G is homologous to the planted loops):\n")
+    print("| gap | simply connected SWN (= naive) | handles SWN | handles naive | handles: G ~ planted |")
+    print("|---|---|---|---|---|")
+    for gap in sorted(set(r["gap_level"] for r in ok)):
+        a0 = [r for r in g0 if r["gap_level"] == gap]
+        ah = [r for r in gh if r["gap_level"] == gap]
+        m = lambda rs, k="error_percent": ("%.3f (%s)" % (statistics.fmean(r[k] for r in rs), pct(sum(1 for r in rs if r[k] < 0.5) / len(rs)))) if rs else "-"
+        rec = pct(sum(1 for r in ah if r["loops_recovered"] == "1") / len(ah)) if ah else "-"
+        print("| %d %% | %s | %s | %s | %s |" % (round(100 * gap), m(a0), m(ah), m(ah, "naive_error_percent"), rec))
+    print()
+    # classification of the handle cases with error >= 0.5 %
+    bad = [r for r in gh if r["error_percent"] >= 0.5]
+    topo = [r for r in bad if r["loops_recovered"] != "1"]
+    amb = [r for r in bad if r["loops_recovered"] == "1" and r["cost_G"] is not None and r["cost_G"] <= r["cost_planted"] + 1e-9]
+    sub = [r for r in bad if r["loops_recovered"] == "1" and r not in amb]
+    print("Cases with handles and error >= 0.5 %%: %d of %d.\n" % (len(bad), len(gh)))
+    print("| why | cases | mean error (%) |")
+    print("|---|---|---|")
+    for name, rs in (("G not homologous to the planted loops (topology of the completion differs)", topo),
+                     ("G homologous to the planted loops, and G is no more expensive than the planted loops in Eq. 11's cost (the model prefers its answer: regions absorbed into G)", amb),
+                     ("G homologous, but more expensive than the planted loops (relaxation / Hodge projection / rounding)", sub)):
+        print("| %s | %d | %s |" % (name, len(rs), f3(statistics.fmean(r["error_percent"] for r in rs)) if rs else "-"))
+    if topo:
+        cheaper = sum(1 for r in topo if r["cost_G"] is not None and r["cost_G"] <= r["cost_planted"] + 1e-9)
+        print("\nOf the %d cases whose G is not homologous to the planted loops, %d have a G no more expensive than the planted loops." % (len(topo), cheaper))
+    print()
+    sh = [r for r in gh if (r["planted_shared_edges"] or 0) > 0]
+    ns = [r for r in gh if (r["planted_shared_edges"] or 0) == 0]
+    print("Planted loops sharing edges with region boundaries (handles): %d cases share, %d do not.\n" % (len(sh), len(ns)))
+    print("| cases with handles | SWN mean / median / max (%) / share < 0.5 % | gap-0 share < 0.5 % |")
+    print("|---|---|---|")
+    for name, rs in (("planted loops share edges with region curves", sh), ("no shared edge", ns)):
+        z = [r for r in rs if r["gap_level"] == 0]
+        print("| %s | %s | %s |" % (name, st(rs), pct(sum(1 for r in z if r["error_percent"] < 0.5) / len(z)) if z else "-"))
+    print()
+    # per mesh
+    print("| mesh | source | vertices | genus | border loops | cases | SWN mean err (%) | naive mean err (%) | G ~ planted | median time (s) | median LP (s) |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
+    meshes = {}
+    for r in ok:
+        meshes.setdefault(r["mesh"], []).append(r)
+    for name, rs in sorted(meshes.items(), key=lambda kv: (kv[1][0]["simply_connected"] == "0", int(kv[1][0]["genus"]), kv[0])):
+        r0 = rs[0]
+        print("| %s | %s | %d | %s | %s | %d | %.3f | %.3f | %s | %.2f | %.2f |" % (
+            name, r0["source"], r0["vertices"], r0["genus"], r0["border_loops"], len(rs),
+            statistics.fmean(r["error_percent"] for r in rs), statistics.fmean(r["naive_error_percent"] for r in rs),
+            pct(sum(1 for r in rs if r["loops_recovered"] == "1") / len(rs)) if r0["simply_connected"] == "0" else "-",
+            statistics.median(r["time_swn"] for r in rs), statistics.median(r["time_residual"] for r in rs)))
+    print()
+    # timings by size
+    print("| class | faces | cases | median total (s) | median jump Laplace x2 (s) | median Hodge (s) | median residual LP (s) | max peak RSS (MB) |")
+    print("|---|---|---|---|---|---|---|---|")
+    bins = [(0, 30000), (30000, 60000), (60000, 120000), (120000, 10 ** 9)]
+    for cls, rs in (("simply connected", g0), ("with handles", gh)):
+        for lo, hi in bins:
+            b = [r for r in rs if lo <= r["faces"] < hi]
+            if not b:
+                continue
+            print("| %s | %s | %d | %.2f | %.2f | %.2f | %.2f | %.0f |" % (
+                cls, "%dk-%s" % (lo // 1000, ("%dk" % (hi // 1000)) if hi < 10 ** 9 else "..."), len(b),
+                statistics.median(r["time_swn"] for r in b),
+                statistics.median(r["time_jump_laplace"] + r["time_second_solve"] for r in b),
+                statistics.median(r["time_hodge"] for r in b), statistics.median(r["time_residual"] for r in b),
+                max(r["peak_rss_mb"] for r in b)))
+    print()
+    if "genus0_time_vs_faces_exponent" in s:
+        print("Least-squares slope of log(time) vs log(faces): simply connected %.2f, with handles %.2f.\n" % (
+            s["genus0_time_vs_faces_exponent"], s.get("handles_time_vs_faces_exponent", float("nan"))))
+
+
+if __name__ == "__main__":
+    main()
