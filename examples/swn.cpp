@@ -42,7 +42,8 @@ static const char* usage =
   "  --output-dir DIR       write labels.txt, mesh.ply, w.obj, bounding.obj, nonbounding.obj,\n"
   "                         completed.obj and summary.json to DIR (created; written atomically)\n"
   "  --epsilon X            relative cost of residual jumps across the curve (default 0.01)\n"
-  "  --lp-solver NAME       residual linear program solver: glpk (default)\n"
+  "  --lp-solver NAME       solver of the residual problem (Eq. 11): lemon (exact min-cost flow, the\n"
+  "                         default when built with LEMON) or glpk (simplex)\n"
   "  --reduced-residual     approximate the residual LP by the paper's reduced problem (Sec. 6): gaps\n"
   "                         closed by shortest paths, one shift per region (faster, approximate)\n"
   "  --linear-solver NAME   sparse Cholesky solver: cholmod (SuiteSparse, the default when built with it)\n"
@@ -71,7 +72,12 @@ struct Usage_error : std::runtime_error
 
 struct Options
 {
-  std::string mesh, curve, output_dir, lp_solver = "glpk";
+#ifdef CGAL_SWN_USE_LEMON
+  std::string lp_solver = "lemon";
+#else
+  std::string lp_solver = "glpk";
+#endif
+  std::string mesh, curve, output_dir;
 #ifdef CGAL_SWN_USE_CHOLMOD
   std::string linear_solver = "cholmod";
 #else
@@ -117,7 +123,12 @@ Options parse_arguments(int argc, char** argv)
   }
   if(o.help) return o;
   if(o.mesh.empty()) throw Usage_error("no mesh file given");
+#ifdef CGAL_SWN_USE_LEMON
+  if(o.lp_solver != "glpk" && o.lp_solver != "lemon")
+    throw Usage_error("unknown --lp-solver '" + o.lp_solver + "' (available: lemon, glpk)");
+#else
   if(o.lp_solver != "glpk") throw Usage_error("unknown --lp-solver '" + o.lp_solver + "' (available: glpk)");
+#endif
 #ifdef CGAL_SWN_USE_CHOLMOD
   if(o.linear_solver != "ldlt" && o.linear_solver != "cholmod")
     throw Usage_error("unknown --linear-solver '" + o.linear_solver + "' (available: cholmod, ldlt)");
@@ -207,12 +218,21 @@ int main(int argc, char** argv)
       SWN::parameters::report(std::ref(report)))))))))
         .verbose(opt.verbose).sparse_linear_solver(sparse_solver));
   };
-  SWN::GLPK_linear_program_traits glpk;
-  bool ok = false;
-  if(opt.linear_solver == "ldlt") ok = solve(glpk, SWN::internal::Eigen_LDLT_sparse_solver());
+  // the LP backend and the sparse solver are chosen at run time among the compiled-in ones
+  auto solve_with = [&](auto& lp) {
 #ifdef CGAL_SWN_USE_CHOLMOD
-  else ok = solve(glpk, SWN::internal::CHOLMOD_sparse_solver());
+    if(opt.linear_solver == "cholmod") return solve(lp, SWN::internal::CHOLMOD_sparse_solver());
 #endif
+    return solve(lp, SWN::internal::Eigen_LDLT_sparse_solver());
+  };
+  bool ok = false;
+  SWN::GLPK_linear_program_traits glpk;
+#ifdef CGAL_SWN_USE_LEMON
+  SWN::LEMON_residual_solver lemon;
+  if(opt.lp_solver == "lemon") ok = solve_with(lemon);
+  else
+#endif
+    ok = solve_with(glpk);
   if(!ok)
   {
     const bool bad_input = report.invalid_input;
