@@ -237,3 +237,27 @@ TEST(Tool, DoubleTorusWithLoopsHasThreeLabelLevels)
   EXPECT_NE(summary.find("\"interior_endpoints\": 14"), std::string::npos);
   EXPECT_NE(summary.find("\"reduced_residual\": true"), std::string::npos);
 }
+
+TEST(Tool, DoubleTorusWithLoopsExactResidual)
+{
+  // the default residual solver (exact Eq. 11): same three levels as the reduced problem
+  std::string summary;
+  const std::map<int, int> h = solve_demo("'" + demo + "DoubleTorusWithLoops.obj'", "dtloops_exact", &summary);
+  ASSERT_EQ(h.size(), 3u);
+  EXPECT_EQ(h.at(0), 17237);
+  EXPECT_EQ(h.at(1), 17149);
+  EXPECT_EQ(h.at(2), 582);
+  EXPECT_NE(summary.find("\"reduced_residual\": false"), std::string::npos);
+}
+
+TEST(Tool, LpBackendsGiveTheSameLabels)
+{
+  const fs::path a = fresh_dir("phi_default"), b = fresh_dir("phi_glpk");
+  const std::string args = "'" + demo + "torus.obj' --curve '" + demo + "torus-phi.txt' --quiet --output-dir ";
+  ASSERT_EQ(run(args + "'" + a.string() + "'").status, 0);
+  ASSERT_EQ(run(args + "'" + b.string() + "' --lp-solver glpk --linear-solver ldlt").status, 0);
+  EXPECT_EQ(read_labels(a / "labels.txt"), read_labels(b / "labels.txt"));
+  EXPECT_EQ(slurp((a / "nonbounding.obj").string()), slurp((b / "nonbounding.obj").string()));
+  fs::remove_all(a);
+  fs::remove_all(b);
+}
