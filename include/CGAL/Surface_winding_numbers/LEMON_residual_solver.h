@@ -45,16 +45,17 @@ optimal node potentials of the circulation are an optimal `sigma`. The solver
   tree (the jump is 0 on the tree), so that only the arcs that close a nonzero cycle of `s` keep a
   nonzero cost;
 - scales costs and jumps by \f$ 2^k \f$ and the weights `cost[a]` by \f$ 2^m \f$ and rounds them to
-  64-bit integers (LEMON's algorithms need integer data): \f$ k \le 50 \f$ is the largest exponent
+  64-bit integers (LEMON's algorithms need integer data): \f$ k \le 42 \f$ is the largest exponent
   for which no node potential can exceed \f$ 2^{59} \f$, and, for cost scaling, the costs
   multiplied by 16 times the number of nodes (as `lemon::CostScaling` does internally) stay below
   \f$ 2^{60} \f$ (\f$ k = 42 \f$ with network simplex, 39 with cost scaling at 35k faces and
   jumps of order 1). \f$ m \f$ makes the sum of all capacities at most \f$ 2^{58} \f$. The jump
   of every arc is then exact up to \f$ 2^{-k-1} \f$ (\f$ 1.1 \cdot 10^{-13} \f$ at
   \f$ k = 42 \f$), and each weight up to \f$ 2^{-m-1} \f$ in absolute value;
-- solves the circulation with LEMON's `NetworkSimplex` or `CostScaling` (see `Algorithm`), checks
-  the result with an exact duality certificate in 128-bit integers (where the compiler has them),
-  and falls back to the other algorithm if that check fails;
+- solves the circulation with LEMON's `NetworkSimplex` (or, on request, `CostScaling`: see
+  `Algorithm`), checks that the flow is a circulation within the capacities and, where the
+  compiler has 128-bit integers, the exact duality certificate (the penalized objective of the
+  potentials equals minus the cost of the flow), and fails if a check fails;
 - recovers `sigma` from the potentials (differences taken in integers before the conversion), and
   shifts each component so that its face listed in `gauge_faces` gets 0; faces without any
   constraining arc get 0 (up to the offsets of fixed arcs).
@@ -75,14 +76,24 @@ algorithm, against 157 s with GLPK's dual simplex; the objectives agree to \f$ 1
 class LEMON_residual_solver
 {
 public:
-  /// The minimum-cost flow algorithm of LEMON run on the circulation.
+  /*!
+  The minimum-cost flow algorithm of LEMON run on the circulation.
+
+  \warning The cost scaling variants are for experiments only. In LEMON 1.3.1 (Debian's
+  `liblemon-dev`) the price refinement heuristic of `lemon::CostScaling`, used by all three
+  methods, can index its rank buckets out of bounds (a heap buffer overflow, found with
+  AddressSanitizer on random networks of 3 to 8 nodes) and can loop forever (`PUSH` on such random
+  networks; `AUGMENT` and `PARTIAL_AUGMENT` on a residual problem of 4 faces, a cycle with one
+  curve arc).
+  `NETWORK_SIMPLEX` passed the same random tests (40,000 networks, checked against
+  `lemon::CycleCanceling` and the duality certificate, clean under AddressSanitizer).
+  */
   enum Algorithm
   {
-    AUTOMATIC,                     ///< `NETWORK_SIMPLEX` up to `automatic_threshold()` network nodes, `COST_SCALING_PUSH` above
-    COST_SCALING_PUSH,             ///< `lemon::CostScaling`, method `PUSH`
-    COST_SCALING_AUGMENT,          ///< `lemon::CostScaling`, method `AUGMENT`
-    COST_SCALING_PARTIAL_AUGMENT,  ///< `lemon::CostScaling`, method `PARTIAL_AUGMENT`
-    NETWORK_SIMPLEX                ///< `lemon::NetworkSimplex`, pivot rule `BLOCK_SEARCH`
+    NETWORK_SIMPLEX,               ///< `lemon::NetworkSimplex`, pivot rule `BLOCK_SEARCH` (the default)
+    COST_SCALING_PUSH,             ///< `lemon::CostScaling`, method `PUSH` (see the warning)
+    COST_SCALING_AUGMENT,          ///< `lemon::CostScaling`, method `AUGMENT` (see the warning)
+    COST_SCALING_PARTIAL_AUGMENT   ///< `lemon::CostScaling`, method `PARTIAL_AUGMENT` (see the warning)
   };
 
   /// What the last call to `solve_residual()` did.
@@ -97,7 +108,7 @@ public:
     std::size_t nonzero_cost_arcs = 0;   ///< problem arcs whose scaled jump `s` is nonzero after gauge fixing
     int cost_exponent = 0;               ///< jumps and costs are scaled by 2^cost_exponent
     int capacity_exponent = 0;           ///< weights are scaled by 2^capacity_exponent
-    Algorithm algorithm = AUTOMATIC;     ///< the algorithm whose result was used (`AUTOMATIC` if none ran)
+    Algorithm algorithm = NETWORK_SIMPLEX;   ///< the algorithm whose result was used
     bool fallback = false;               ///< the first algorithm failed and the other one was used
     bool certified = false;              ///< the exact duality certificate of the scaled problem held
     double objective = 0;                ///< Eq. 11 objective of `sigma`, recomputed with the original data
@@ -109,10 +120,11 @@ public:
     /// @}
   };
 
-  /// the algorithm used by default: `AUTOMATIC`. On the demo double torus and its subdivisions
-  /// (35k, 140k, 560k faces) network simplex took 0.4, 13 and 204 s, cost scaling (push) 2.0, 25
-  /// and 108 s (see `benchmark/residual_solvers.md`).
-  static Algorithm default_algorithm() { return AUTOMATIC; }
+  /// the algorithm used by default: `NETWORK_SIMPLEX`. On the demo double torus with loops and its
+  /// subdivisions (35k, 140k, 560k faces) it took 0.5, 15 and 204 s, cost scaling (push) 2.1, 27
+  /// and 108 s (see `benchmark/residual_solvers.md`); it is the faster one up to about 200k faces,
+  /// and the one without known defects in LEMON 1.3.1 (see `Algorithm`).
+  static Algorithm default_algorithm() { return NETWORK_SIMPLEX; }
 
   /// creates a solver that uses `default_algorithm()`
   LEMON_residual_solver() : algorithm_(default_algorithm()) {}
@@ -126,14 +138,12 @@ public:
 
   /// sets the algorithm of the next solves
   void set_algorithm(Algorithm a) { algorithm_ = a; }
-  /// number of network nodes (faces after contraction) up to which `AUTOMATIC` uses network simplex (default 250000)
-  void set_automatic_threshold(std::size_t n) { automatic_threshold_ = n; }
-  /// see `set_automatic_threshold()`
-  std::size_t automatic_threshold() const { return automatic_threshold_; }
   /// the algorithm of the next solves
   Algorithm algorithm() const { return algorithm_; }
-  /// if `true` (default), a failed or uncertified solve is repeated with the other algorithm
-  /// (`NETWORK_SIMPLEX` after cost scaling, `COST_SCALING_PUSH` after network simplex)
+  /// if `true`, a failed or uncertified solve is repeated with the other kind of algorithm
+  /// (`NETWORK_SIMPLEX` after cost scaling, `COST_SCALING_PUSH` after network simplex). Default:
+  /// `false` (a failure of network simplex has not been seen; cost scaling has the defects listed
+  /// at `Algorithm`).
   void set_fallback(bool b) { fallback_ = b; }
   /// largest violation of the bounds accepted (default `1e-9`; raised to \f$ 2^{1-k} \f$ when the
   /// scaling exponent `k` is small)
@@ -211,7 +221,6 @@ private:
   {
     switch(a)
     {
-      case AUTOMATIC: return "automatic";
       case COST_SCALING_PUSH: return "CostScaling/PUSH";
       case COST_SCALING_AUGMENT: return "CostScaling/AUGMENT";
       case COST_SCALING_PARTIAL_AUGMENT: return "CostScaling/PARTIAL_AUGMENT";
@@ -433,7 +442,6 @@ private:
       stats_.cost_exponent = k;
     };
     Algorithm a = algorithm_;
-    if(a == AUTOMATIC) a = nn <= automatic_threshold_ ? NETWORK_SIMPLEX : COST_SCALING_PUSH;
     if(!has_wide_large_cost() && a != NETWORK_SIMPLEX) a = NETWORK_SIMPLEX;
     int k = a == NETWORK_SIMPLEX ? k_simplex : k_scaling;
     Network net;
@@ -608,12 +616,14 @@ private:
   }
 
   static constexpr std::size_t npos = std::size_t(-1);
-  // beyond 2^50 the scaled jumps would mostly carry the rounding noise of the doubles
-  static constexpr int max_cost_exponent = 50;
+  // Beyond 2^42 the scaled jumps start to carry the rounding noise of the doubles (the gauge-fixed
+  // jumps are sums of differences of values of order 1..100, whose ulp is 2^-52..2^-46): on the
+  // demo torus 155 arcs keep a nonzero cost at 2^42, 256 at 2^44, 463 at 2^46. That noise only
+  // makes network simplex slower.
+  static constexpr int max_cost_exponent = 42;
 
   Algorithm algorithm_;
-  std::size_t automatic_threshold_ = 250000;
-  bool fallback_ = true;
+  bool fallback_ = false;
   bool verbose_ = false;
   double tolerance_ = 1e-9;
   std::string error_;
