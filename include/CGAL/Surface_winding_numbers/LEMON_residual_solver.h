@@ -45,8 +45,8 @@ optimal node potentials of the circulation are an optimal `sigma`. The solver
   tree (the jump is 0 on the tree), so that only the arcs that close a nonzero cycle of `s` keep a
   nonzero cost;
 - scales costs and jumps by \f$ 2^k \f$ and the weights `cost[a]` by \f$ 2^m \f$ and rounds them to
-  64-bit integers (LEMON's algorithms need integer data): \f$ k \le 42 \f$ is the largest exponent
-  for which no node potential can exceed \f$ 2^{59} \f$, and, for cost scaling, the costs
+  64-bit integers (LEMON's algorithms need integer data): \f$ k \f$ is the largest exponent up to
+  42 for which no node potential can exceed \f$ 2^{59} \f$, and, for cost scaling, the costs
   multiplied by 16 times the number of nodes (as `lemon::CostScaling` does internally) stay below
   \f$ 2^{60} \f$ (\f$ k = 42 \f$ with network simplex, 39 with cost scaling at 35k faces and
   jumps of order 1). \f$ m \f$ makes the sum of all capacities at most \f$ 2^{58} \f$. The jump
@@ -66,9 +66,9 @@ other, if the data are too large for the integer scaling, if no algorithm return
 optimum, or if the problem is infeasible. In the last case `sigma` holds the solution of least
 penalized violation, and `statistics().max_violation` tells by how much it violates the bounds.
 
-On the demo double torus with loops (35k faces) the residual problem takes 0.4 s with the default
-algorithm, against 157 s with GLPK's dual simplex; the objectives agree to \f$ 10^{-10} \f$
-(see `benchmark/residual_solvers.md` in the source tree). The class is not copyable: pass it with
+On the demo double torus with loops (35k faces) the residual problem takes 0.5 s with the default
+algorithm, against 117 to 250 s with GLPK's dual simplex on the same (shared) machine; the
+objectives agree to \f$ 10^{-11} \f$ (see `benchmark/residual_solvers.md` in the source tree). The class is not copyable: pass it with
 `std::ref()` to the named parameter `lp_solver`.
 
 \cgalModels `SurfaceWindingNumbersResidualSolver`
