@@ -131,8 +131,10 @@ Suite make_suite(const std::string& name)
     s.gaps = {0.0, 0.15};
     add("q_blob", "blob", 0, "", 0, 3000, 2);
     add("q_disk", "blob", 1, "plane", 0, 3000, 1);
-    add("q_torus", "chain", 1, "", 0, 3000, 1);
+    add("q_torus", "chain", 1, "", 0, 3000, 2);
+    add("q_chain2", "chain", 2, "", 0, 4000, 2);
     add("q_chain2_holes", "chain", 2, "holes", 2, 4000, 1);
+    add("q_plate3", "chain", 3, "plane", 0, 4000, 1);
   }
   else if(name == "full" || name == "ablation")
   {
@@ -901,25 +903,27 @@ void generate(const Options& o)
     const auto t0 = std::chrono::steady_clock::now();
     const std::string mesh_file = fs::absolute(mesh_cache + "/" + spec.name + "_" + std::to_string(spec.target_vertices) + ".off").string();
     Mesh m;
-    if(fs::exists(mesh_file))
-      CGAL::Surface_winding_numbers::IO::read_mesh(mesh_file, m);
-    else
+    if(!fs::exists(mesh_file))
     {
       if(spec.kind == "file" && o.cgal_data.empty())
       {
         std::cerr << "[gen] skipping " << spec.name << ": no --cgal-data directory\n";
         continue;
       }
-      try { m = build_mesh(spec, o.cgal_data); }
-      catch(const std::exception& e)
+      // Each mesh is built by a fresh process of this program, with address-space randomization off
+      // when possible: CGAL's surface mesher orders some work by memory addresses, so a mesh built
+      // after another one in the same process (or with another memory layout) can differ slightly.
+      const std::string self = fs::read_symlink("/proc/self/exe").string();
+      std::string cmd = "'" + self + "' --build-mesh '" + spec.name + "' --suite '" + o.suite + "' --cgal-data '" +
+                        o.cgal_data + "' --mesh-out '" + mesh_file + "'";
+      if(std::system("setarch \"$(uname -m)\" -R true >/dev/null 2>&1") == 0) cmd = "setarch \"$(uname -m)\" -R " + cmd;
+      if(std::system(cmd.c_str()) != 0 || !fs::exists(mesh_file))
       {
-        std::cerr << "[gen] skipping " << spec.name << ": " << e.what() << "\n";
+        std::cerr << "[gen] skipping " << spec.name << ": the mesh could not be built\n";
         continue;
       }
-      write_off(m, mesh_file);
-      m.clear();
-      CGAL::Surface_winding_numbers::IO::read_mesh(mesh_file, m);   // the exact mesh the solver will read
     }
+    CGAL::Surface_winding_numbers::IO::read_mesh(mesh_file, m);   // the exact mesh the solver will read
     const Topology topo = topology(m);
     const double t_mesh = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::cerr << "[gen] " << spec.name << ": " << m.number_of_vertices() << " vertices, " << m.number_of_faces()
@@ -1107,6 +1111,7 @@ int main(int argc, char** argv)
   Options o;
   std::vector<std::string> info_files;
   bool info_mode = false;
+  std::string build_mesh_name, mesh_out;
   for(int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
@@ -1131,6 +1136,8 @@ int main(int argc, char** argv)
       else if(a == "--gaps") { o.gap_mode = next(); if(o.gap_mode != "per-curve" && o.gap_mode != "global") throw std::runtime_error("--gaps per-curve|global"); }
       else if(a == "--straighten") { const std::string v = next(); if(v != "on" && v != "off") throw std::runtime_error("--straighten on|off"); o.straighten = v == "on"; }
       else if(a == "--info") info_mode = true;
+      else if(a == "--build-mesh") build_mesh_name = next();
+      else if(a == "--mesh-out") mesh_out = next();
       else if(info_mode) info_files.push_back(a);
       else throw std::runtime_error("unknown argument " + a);
     }
@@ -1143,6 +1150,18 @@ int main(int argc, char** argv)
   try
   {
     if(info_mode) { info(info_files); return 0; }
+    if(!build_mesh_name.empty())
+    {
+      // internal: build one mesh of the suite in this fresh process and write it (see generate())
+      for(const Mesh_spec& spec : make_suite(o.suite).meshes)
+        if(spec.name == build_mesh_name)
+        {
+          const Mesh m = build_mesh(spec, o.cgal_data);
+          write_off(m, mesh_out);
+          return 0;
+        }
+      throw std::runtime_error("no mesh " + build_mesh_name + " in suite " + o.suite);
+    }
     if(o.out.empty()) throw std::runtime_error("--out is required");
     generate(o);
   }
