@@ -113,11 +113,9 @@ public:
     bool certified = false;              ///< the exact duality certificate of the scaled problem held
     double objective = 0;                ///< Eq. 11 objective of `sigma`, recomputed with the original data
     double max_violation = 0;            ///< largest violation of the bounds by `sigma`
-    /// \name Timings
-    /// Wall-clock seconds.
-    /// @{
-    double time_build = 0, time_solve = 0, time_recover = 0;
-    /// @}
+    double time_build = 0;               ///< seconds: checks, contraction, gauge, scaling, network
+    double time_solve = 0;               ///< seconds: LEMON (graph, algorithm) and the certificate
+    double time_recover = 0;             ///< seconds: sigma from the potentials, objective and violation
   };
 
   /// the algorithm used by default: `NETWORK_SIMPLEX`. On the demo double torus with loops and its
