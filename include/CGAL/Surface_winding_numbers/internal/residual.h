@@ -147,6 +147,12 @@ struct is_residual_solver<T, std::void_t<decltype(std::declval<T&>().solve_resid
                                 std::declval<const Residual_problem&>(), std::declval<std::vector<double>&>()))>>
   : std::true_type {};
 
+// Detects solvers that explain their failures (a member error() convertible to std::string).
+template <class T, class = void>
+struct has_error_message : std::false_type {};
+template <class T>
+struct has_error_message<T, std::void_t<decltype(std::string(std::declval<const T&>().error()))>> : std::true_type {};
+
 // The residual function (paper Sec. 3.4, Eq. 11): solves the residual problem with the given solver
 // (a residual solver, or LP traits), checks the optimum against the constraints, and returns sigma.
 template <class Solver>
@@ -158,7 +164,12 @@ std::vector<double> residual_function(const Residual_problem& P, Solver& solver,
   {
     n_vars = P.number_of_faces;
     n_rows = P.number_of_arcs();
-    if(!solver.solve_residual(P, sigma)) throw Solver_failure("the residual solver failed");
+    if(!solver.solve_residual(P, sigma))
+    {
+      std::string why;
+      if constexpr(has_error_message<Solver>::value) why = std::string(": ") + solver.error();
+      throw Solver_failure("the residual solver failed" + why);
+    }
   }
   else
     sigma = solve_residual_with_lp(P, solver, n_vars, n_rows);
