@@ -315,17 +315,7 @@ TEST(ResidualFunction, OptimumSatisfiesConstraintsAndMatchesTheAuthorsFormulatio
   for(int j = 3; j <= 5; ++j) loop.push_back(vs[12 * nv + j]);
   for(int i = 11; i >= 9; --i) loop.push_back(vs[i * nv + 5]);
   const std::vector<double> chain = table_chain(m, solver, {a, b, loop});
-  const std::vector<char> endpoint = SI::interior_endpoints(t, chain);
-  std::vector<double> w;
-  SI::cotan_weights(t, w);
-  SI::Jump_laplace_system<LA> L;
-  L.jump_laplacian(t, w, endpoint);
-  const std::vector<double> u = L.solve_jump_laplace(SI::reduced_coordinates(t, SI::arc_jumps_from_chain(t, chain), endpoint));
-  SI::Two_form_laplacian<LA> B;
-  const std::vector<double> star = SI::edge_hodge_star(t, w);
-  B.assemble(t, star);
-  const std::vector<double> v0 = SI::local_integration(t, B.harmonic_part(SI::darboux_derivative(t, u, endpoint)));
-  const SWN::Residual_problem P = SI::residual_problem(t, v0, chain, 0.01);
+  const SWN::Residual_problem P = solver.core().residual_problem_of(chain, 0.01);
   SWN::GLPK_linear_program_traits lp;
   double objective = 0;
   std::size_t nvar = 0, nrow = 0;

@@ -246,19 +246,7 @@ SWN::Residual_problem pipeline_problem(const Mesh& m, const std::vector<std::vec
   for(const auto& p : polylines) EXPECT_TRUE(SWN::add_vertex_polyline_to_chain(m, p, map));
   std::vector<double> chain(num_edges(m), 0.);
   for(auto e : edges(m)) chain[solver.edge_index(e)] = get(map, e);
-  const std::vector<char> endpoint = SI::interior_endpoints(t, chain);
-  std::vector<double> w;
-  SI::cotan_weights(t, w);
-  SI::Jump_laplace_system<LA> L;
-  L.jump_laplacian(t, w, endpoint);
-  const std::vector<double> u = L.solve_jump_laplace(SI::reduced_coordinates(t, SI::arc_jumps_from_chain(t, chain), endpoint));
-  SI::Two_form_laplacian<LA> B;
-  const std::vector<double> star = SI::edge_hodge_star(t, w);
-  B.assemble(t, star);
-  std::vector<double> gamma = SI::darboux_derivative(t, u, endpoint);
-  gamma = B.harmonic_part(gamma);
-  const std::vector<double> v0 = SI::local_integration(t, gamma);
-  return SI::residual_problem(t, v0, chain, epsilon);
+  return solver.core().residual_problem_of(chain, epsilon);
 }
 
 } // namespace

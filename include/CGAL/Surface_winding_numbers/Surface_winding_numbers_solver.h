@@ -242,6 +242,7 @@ public:
 
   /// \cond SKIP_IN_MANUAL
   const internal::Mesh_tables& tables() const { return core_->tables(); }
+  internal::Winding_number_core<LA>& core() { return *core_; }
   std::size_t vertex_index(vertex_descriptor v) const { return get(vim_, v); }
   std::size_t edge_index(edge_descriptor e) const { return get(eim_, e); }
   std::size_t face_index(face_descriptor f) const { return get(fim_, f); }

@@ -17,6 +17,7 @@
 #include <CGAL/Surface_winding_numbers/internal/residual.h>
 #include <CGAL/Surface_winding_numbers/internal/winding_number.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -112,8 +113,7 @@ public:
     Core_result r;
     // u: jump Laplace solve (Eq. 10) with jumps Gamma
     Jump_laplace_system<LA> L;
-    L.jump_laplacian(m_, weight_, endpoint);
-    r.u = L.solve_jump_laplace(reduced_coordinates(m_, arc_jumps_from_chain(m_, chain), endpoint));
+    r.u = first_jump_laplace_solve(chain, endpoint, L);
     rep.time_jump_laplace = clock.lap();
     if(verbose) std::cerr << "[swn] jump Laplace solve (" << L.size() << " unknowns): " << rep.time_jump_laplace << " s\n";
 
@@ -133,13 +133,8 @@ public:
     else
     {
       // omega = D u (Eq. 5); gamma = harmonic part (Eq. 9) when the curve has interior endpoints
-      std::vector<double> gamma = darboux_derivative(m_, r.u, endpoint);
-      if(rep.interior_endpoints > 0)
-      {
-        if(!hodge_.assembled()) hodge_.assemble(m_, star_);
-        gamma = hodge_.harmonic_part(gamma);
-        rep.hodge_projection = true;
-      }
+      const std::vector<double> gamma = harmonic_part_of(r.u, endpoint, rep.interior_endpoints > 0);
+      rep.hodge_projection = rep.interior_endpoints > 0;
       rep.time_hodge = clock.lap();
       if(verbose) std::cerr << "[swn] Darboux derivative and harmonic part: " << rep.time_hodge << " s\n";
 
@@ -184,6 +179,34 @@ public:
     rep.time_labels = clock.lap();
     rep.time_total = total.lap();
     return r;
+  }
+
+  // u of the first jump Laplace solve (Eq. 10); factorizes L, which the second solve reuses
+  std::vector<double> first_jump_laplace_solve(const std::vector<double>& chain, const std::vector<char>& endpoint,
+                                               Jump_laplace_system<LA>& L) const
+  {
+    L.jump_laplacian(m_, weight_, endpoint);
+    return L.solve_jump_laplace(reduced_coordinates(m_, arc_jumps_from_chain(m_, chain), endpoint));
+  }
+
+  // gamma: the Darboux derivative of u (Eq. 5), projected to its harmonic part (Eq. 9) when the curve
+  // has interior endpoints
+  std::vector<double> harmonic_part_of(const std::vector<double>& u, const std::vector<char>& endpoint, bool open_curve)
+  {
+    std::vector<double> gamma = darboux_derivative(m_, u, endpoint);
+    if(!open_curve) return gamma;
+    if(!hodge_.assembled()) hodge_.assemble(m_, star_);
+    return hodge_.harmonic_part(gamma);
+  }
+
+  // The residual problem (Eq. 11) of a chain, as solve() builds it (for tests and benchmarks).
+  Residual_problem residual_problem_of(const std::vector<double>& chain, double epsilon)
+  {
+    const std::vector<char> endpoint = interior_endpoints(m_, chain);
+    Jump_laplace_system<LA> L;
+    const std::vector<double> u = first_jump_laplace_solve(chain, endpoint, L);
+    const bool open_curve = std::find(endpoint.begin(), endpoint.end(), 1) != endpoint.end();
+    return residual_problem(m_, local_integration(m_, harmonic_part_of(u, endpoint, open_curve)), chain, epsilon);
   }
 
   void fill_mesh_report(Solve_report& rep) const
