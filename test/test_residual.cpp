@@ -240,7 +240,6 @@ SWN::Residual_problem pipeline_problem(const Mesh& m, const std::vector<std::vec
 {
   SWN::Surface_winding_numbers_solver<Mesh> solver(m);
   EXPECT_TRUE(solver.is_valid());
-  const SI::Mesh_tables& t = solver.tables();
   auto map = get(CGAL::dynamic_edge_property_t<int>(), m);
   for(auto e : edges(m)) put(map, e, 0);
   for(const auto& p : polylines) EXPECT_TRUE(SWN::add_vertex_polyline_to_chain(m, p, map));
