@@ -29,14 +29,12 @@ inline void check_geometry(const Mesh_tables& m)
   for(std::size_t f = 0; f < m.nf; ++f)
   {
     const double *p = m.point(m.fv[3 * f]), *q = m.point(m.fv[3 * f + 1]), *r = m.point(m.fv[3 * f + 2]);
-    const double a[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]};
-    const double b[3] = {r[0] - p[0], r[1] - p[1], r[2] - p[2]};
-    const double n[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-    const double n2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
-    const double l2 = std::max({a[0] * a[0] + a[1] * a[1] + a[2] * a[2], b[0] * b[0] + b[1] * b[1] + b[2] * b[2],
-                                (q[0] - r[0]) * (q[0] - r[0]) + (q[1] - r[1]) * (q[1] - r[1]) + (q[2] - r[2]) * (q[2] - r[2])});
-    // |n| = 2 area; a face is degenerate when its area is at round-off level of its size
-    if(!(std::sqrt(n2) > 16 * DBL_EPSILON * l2))
+    auto squared_distance = [](const double* x, const double* y) {
+      return (x[0] - y[0]) * (x[0] - y[0]) + (x[1] - y[1]) * (x[1] - y[1]) + (x[2] - y[2]) * (x[2] - y[2]);
+    };
+    const double l2 = std::max({squared_distance(p, q), squared_distance(p, r), squared_distance(q, r)});
+    // a face is degenerate when its area is at round-off level of its size
+    if(!(2 * m.face_area(f) > 16 * DBL_EPSILON * l2))
       throw Invalid_input("face " + std::to_string(f) + " has zero area (degenerate triangle)");
   }
 }

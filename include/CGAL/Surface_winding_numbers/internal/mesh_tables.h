@@ -85,6 +85,15 @@ struct Mesh_tables
   }
 
   const double* point(std::size_t v) const { return &points[3 * v]; }
+
+  // area of face f
+  double face_area(std::size_t f) const
+  {
+    const double *p = point(fv[3 * f]), *q = point(fv[3 * f + 1]), *r = point(fv[3 * f + 2]);
+    const double a[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]}, b[3] = {r[0] - p[0], r[1] - p[1], r[2] - p[2]};
+    const double n[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    return 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  }
   double edge_length(std::size_t e) const
   {
     const double* p = point(ev[2 * e]);

@@ -107,9 +107,7 @@ std::vector<double> reduced_residual_function(const Mesh_tables& m, const std::v
     const std::size_t r = region_component.size();
     region_component.push_back(m.face_component[seed]);
     region[seed] = r;
-    v[3 * seed] = 0;
-    v[3 * seed + 1] = gamma_along(3 * seed);
-    v[3 * seed + 2] = v[3 * seed + 1] + gamma_along(3 * seed + 1);
+    integrate_in_face(m, gamma, seed, v);
     queue.assign(1, seed);
     for(std::size_t q = 0; q < queue.size(); ++q)
     {

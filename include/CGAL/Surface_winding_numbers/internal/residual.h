@@ -24,15 +24,17 @@ namespace internal {
 
 // Local integration of gamma in every face (paper Sec. 3.4): v0 = 0 at the face's first corner,
 // then gamma summed along the face's sides.
+inline void integrate_in_face(const Mesh_tables& m, const std::vector<double>& gamma, std::size_t f, std::vector<double>& v)
+{
+  v[3 * f] = 0.;
+  v[3 * f + 1] = m.fs[3 * f] * gamma[m.fe[3 * f]];
+  v[3 * f + 2] = v[3 * f + 1] + m.fs[3 * f + 1] * gamma[m.fe[3 * f + 1]];
+}
+
 inline std::vector<double> local_integration(const Mesh_tables& m, const std::vector<double>& gamma)
 {
   std::vector<double> v(3 * m.nf);
-  for(std::size_t f = 0; f < m.nf; ++f)
-  {
-    v[3 * f] = 0.;
-    v[3 * f + 1] = m.fs[3 * f] * gamma[m.fe[3 * f]];
-    v[3 * f + 2] = v[3 * f + 1] + m.fs[3 * f + 1] * gamma[m.fe[3 * f + 1]];
-  }
+  for(std::size_t f = 0; f < m.nf; ++f) integrate_in_face(m, gamma, f, v);
   return v;
 }
 

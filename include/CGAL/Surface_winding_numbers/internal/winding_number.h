@@ -105,13 +105,7 @@ inline std::vector<int> round_labels(const Mesh_tables& m, const std::vector<dou
 inline std::vector<int> normalize_labels(const Mesh_tables& m, std::vector<int>& W)
 {
   std::vector<std::map<int, double>> area(m.n_components);
-  for(std::size_t f = 0; f < m.nf; ++f)
-  {
-    const double *p = m.point(m.fv[3 * f]), *q = m.point(m.fv[3 * f + 1]), *r = m.point(m.fv[3 * f + 2]);
-    const double a[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]}, b[3] = {r[0] - p[0], r[1] - p[1], r[2] - p[2]};
-    const double n[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-    area[m.face_component[f]][W[f]] += 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-  }
+  for(std::size_t f = 0; f < m.nf; ++f) area[m.face_component[f]][W[f]] += m.face_area(f);
   std::vector<int> offset(m.n_components, 0);
   for(std::size_t c = 0; c < m.n_components; ++c)
   {
