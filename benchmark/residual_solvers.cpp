@@ -1,6 +1,6 @@
 // Residual solvers (Eq. 11) on a real case: LEMON network flows vs GLPK's simplex.
 //
-//   residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--augment 0|1] [--verbose]
+//   residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--augment 0|1] [--scaling 0|1] [--simplex 0|1] [--cut 0|1] [--verbose]
 //
 // Reads the mesh and its curves like the swn tool (OBJ `l` lines and/or a curve file), cuts the mesh
 // so that the curves lie on edges, optionally subdivides it N times 1-to-4 at the edge midpoints
@@ -114,7 +114,7 @@ static double now()
 int main(int argc, char** argv)
 {
   std::string mesh_file, curve_file;
-  bool run_glpk = true, run_whole = true, run_augment = true, verbose = false;
+  bool run_glpk = true, run_whole = true, run_augment = true, run_scaling = true, run_simplex = true, run_cut = true, verbose = false;
   int repeat = 3, subdivisions = 0;
   for(int i = 1; i < argc; ++i)
   {
@@ -125,10 +125,13 @@ int main(int argc, char** argv)
     else if(a == "--subdivide" && i + 1 < argc) subdivisions = std::atoi(argv[++i]);
     else if(a == "--whole" && i + 1 < argc) run_whole = std::atoi(argv[++i]) != 0;
     else if(a == "--augment" && i + 1 < argc) run_augment = std::atoi(argv[++i]) != 0;
+    else if(a == "--scaling" && i + 1 < argc) run_scaling = std::atoi(argv[++i]) != 0;
+    else if(a == "--simplex" && i + 1 < argc) run_simplex = std::atoi(argv[++i]) != 0;
+    else if(a == "--cut" && i + 1 < argc) run_cut = std::atoi(argv[++i]) != 0;
     else if(a == "--verbose") verbose = true;
     else mesh_file = a;
   }
-  if(mesh_file.empty()) { std::fprintf(stderr, "usage: residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--augment 0|1] [--verbose]\n"); return 2; }
+  if(mesh_file.empty()) { std::fprintf(stderr, "usage: residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--augment 0|1] [--scaling 0|1] [--simplex 0|1] [--cut 0|1] [--verbose]\n"); return 2; }
 
   Mesh input;
   const SIO::Mesh_read_info info = SIO::read_mesh(mesh_file, input);
@@ -168,14 +171,21 @@ int main(int argc, char** argv)
     mesh.remove_property_map(labels);
     mesh.remove_property_map(G);
   };
-  const Lemon::Algorithm algorithms[] = {Lemon::NETWORK_SIMPLEX, Lemon::COST_SCALING_PUSH,
-                                         Lemon::COST_SCALING_PARTIAL_AUGMENT, Lemon::COST_SCALING_AUGMENT};
-  const char* names[] = {"lemon NetworkSimplex/BLOCK_SEARCH", "lemon CostScaling/PUSH",
-                         "lemon CostScaling/PARTIAL_AUGMENT", "lemon CostScaling/AUGMENT"};
-  const int n_algorithms = run_augment ? 4 : 3;
+  std::vector<Lemon::Algorithm> algorithms = {Lemon::NETWORK_SIMPLEX, Lemon::MULTILEVEL};
+  std::vector<const char*> names = {"lemon NetworkSimplex/BLOCK_SEARCH", "lemon Multilevel"};
+  if(run_scaling)
+  {
+    algorithms.insert(algorithms.end(), {Lemon::COST_SCALING_PUSH, Lemon::COST_SCALING_PARTIAL_AUGMENT});
+    names.insert(names.end(), {"lemon CostScaling/PUSH", "lemon CostScaling/PARTIAL_AUGMENT"});
+    if(run_augment) { algorithms.push_back(Lemon::COST_SCALING_AUGMENT); names.push_back("lemon CostScaling/AUGMENT"); }
+  }
+  if(!run_cut) { algorithms.erase(algorithms.begin() + 1); names.erase(names.begin() + 1); }
+  if(!run_simplex) { algorithms.erase(algorithms.begin()); names.erase(names.begin()); }
+  const int n_algorithms = int(algorithms.size());
   for(int k = 0; k < (run_whole ? n_algorithms : 1); ++k)
   {
     Lemon lemon(algorithms[k]);
+    lemon.set_verbose(verbose);
     Recorder<Lemon> rec{lemon, {}};
     whole(rec, names[k]);
     if(k == 0) P = rec.problem;
@@ -208,10 +218,10 @@ int main(int argc, char** argv)
     const Lemon::Statistics& st = lemon.statistics();
     if(k == 0) best_objective = P.objective(sigma);
     std::printf("residual %-36s ok %d  best of %d %8.3f s (build %.3f, flow %.3f, recover %.3f)  objective %.13f  violation %.1e  "
-                "nodes %zu  network arcs %zu  nonzero costs %zu  scale 2^%d/2^%d  certified %d\n",
+                "nodes %zu  network arcs %zu  nonzero costs %zu  scale 2^%d/2^%d  certified %d  levels %zu  refinements %zu  largest band %zu\n",
                 names[k], int(ok), repeat, best, st.time_build, st.time_solve, st.time_recover, P.objective(sigma),
                 P.max_violation(sigma), st.nodes, st.network_arcs, st.nonzero_cost_arcs, st.cost_exponent,
-                st.capacity_exponent, int(st.certified));
+                st.capacity_exponent, int(st.certified), st.levels, st.refinements, st.largest_band);
   }
   if(run_glpk)
   {

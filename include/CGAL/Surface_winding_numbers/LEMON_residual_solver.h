@@ -6,6 +6,7 @@
 
 #include <CGAL/Surface_winding_numbers/Residual_problem.h>
 
+#include <lemon/preflow.h>
 #include <lemon/cost_scaling.h>
 #include <lemon/network_simplex.h>
 #include <lemon/smart_graph.h>
@@ -93,7 +94,8 @@ public:
     NETWORK_SIMPLEX,               ///< `lemon::NetworkSimplex`, pivot rule `BLOCK_SEARCH` (the default)
     COST_SCALING_PUSH,             ///< `lemon::CostScaling`, method `PUSH` (see the warning)
     COST_SCALING_AUGMENT,          ///< `lemon::CostScaling`, method `AUGMENT` (see the warning)
-    COST_SCALING_PARTIAL_AUGMENT   ///< `lemon::CostScaling`, method `PARTIAL_AUGMENT` (see the warning)
+    COST_SCALING_PARTIAL_AUGMENT,  ///< `lemon::CostScaling`, method `PARTIAL_AUGMENT` (see the warning)
+    MULTILEVEL                     ///< `NETWORK_SIMPLEX` on a hierarchy of contracted problems, certified by `lemon::Circulation` (see `default_algorithm()`)
   };
 
   /// What the last call to `solve_residual()` did.
@@ -111,6 +113,9 @@ public:
     Algorithm algorithm = NETWORK_SIMPLEX;   ///< the algorithm whose result was used
     bool fallback = false;               ///< the first algorithm failed and the other one was used
     bool certified = false;              ///< the exact duality certificate of the scaled problem held
+    std::size_t levels = 0;              ///< `MULTILEVEL`: levels of the hierarchy (1: the problem itself)
+    std::size_t refinements = 0;         ///< `MULTILEVEL`: band problems solved on the finest level
+    std::size_t largest_band = 0;        ///< `MULTILEVEL`: nodes of the largest problem given to network simplex
     double objective = 0;                ///< Eq. 11 objective of `sigma`, recomputed with the original data
     double max_violation = 0;            ///< largest violation of the bounds by `sigma`
     double time_build = 0;               ///< seconds: checks, contraction, gauge, scaling, network
@@ -223,6 +228,7 @@ private:
       case COST_SCALING_AUGMENT: return "CostScaling/AUGMENT";
       case COST_SCALING_PARTIAL_AUGMENT: return "CostScaling/PARTIAL_AUGMENT";
       case NETWORK_SIMPLEX: return "NetworkSimplex/BLOCK_SEARCH";
+      case MULTILEVEL: return "Multilevel/NetworkSimplex+Circulation";
     }
     return "?";
   }
@@ -441,6 +447,36 @@ private:
     };
     Algorithm a = algorithm_;
     if(!has_wide_large_cost() && a != NETWORK_SIMPLEX) a = NETWORK_SIMPLEX;
+    if(a == MULTILEVEL)
+    {
+      stats_.time_build = seconds(t_build);
+      const auto t_solve = std::chrono::steady_clock::now();
+      std::vector<Int_arc> iarcs(arcs.size());
+      for(std::size_t i = 0; i < arcs.size(); ++i)
+      {
+        const Work_arc& e = arcs[i];
+        Int_arc& x = iarcs[i];
+        x.L = e.L; x.R = e.R;
+        x.sh = to_int(st[i], k_simplex);
+        x.w = w_hat[i];
+        x.has_lo = std::isfinite(e.lo); x.has_up = std::isfinite(e.up);
+        x.lo = x.has_lo ? to_int(e.lo, k_simplex) : 0;
+        x.up = x.has_up ? to_int(e.up, k_simplex) : 0;
+      }
+      stats_.cost_exponent = k_simplex;
+      std::vector<Int> pi;
+      std::string why;
+      if(multilevel(nn, std::move(iarcs), U, pi, why))
+      {
+        stats_.time_solve = seconds(t_solve);
+        stats_.algorithm = a;
+        return recover(P, sigma, nn, pi, sigma0, roots, component, face_node, face_offset, k_simplex);
+      }
+      if(!fallback_) return fail("LEMON residual solver: " + why);
+      if(verbose_) std::cerr << "[swn] LEMON " << algorithm_name(a) << ": " << why << "; trying " << algorithm_name(NETWORK_SIMPLEX) << "\n";
+      stats_.fallback = true;
+      a = NETWORK_SIMPLEX;
+    }
     int k = a == NETWORK_SIMPLEX ? k_simplex : k_scaling;
     Network net;
     build(k, net);
@@ -474,9 +510,18 @@ private:
     else
       stats_.certified = true;
     stats_.time_solve = seconds(t_solve);
-    const double tolerance = (std::max)(tolerance_, std::ldexp(1., 1 - k));
+    return recover(P, sigma, nn, pi, sigma0, roots, component, face_node, face_offset, k);
+  }
 
-    // 7. sigma = sigma0 + (pi - pi[root]) / 2^k on the nodes, plus the offsets of the contraction
+  // 7. sigma = sigma0 + (pi - pi[root]) / 2^k on the nodes, plus the offsets of the contraction;
+  //    the first gauge face of each component gets 0
+  bool recover(const Residual_problem& P, std::vector<double>& sigma, std::size_t nn, const std::vector<Int>& pi,
+               const std::vector<double>& sigma0, const std::vector<std::size_t>& roots,
+               const std::vector<std::size_t>& component, const std::vector<std::size_t>& face_node,
+               const std::vector<double>& face_offset, int k)
+  {
+    const std::size_t nf = P.number_of_faces;
+    const double tolerance = (std::max)(tolerance_, std::ldexp(1., 1 - k));
     const auto t_recover = std::chrono::steady_clock::now();
     std::vector<double> node_sigma(nn);
     for(std::size_t v = 0; v < nn; ++v)
@@ -500,7 +545,7 @@ private:
       std::cerr << "[swn] LEMON " << algorithm_name(stats_.algorithm) << (stats_.fallback ? " (fallback)" : "") << ": "
                 << stats_.nodes << " nodes, " << stats_.network_arcs << " arcs (" << stats_.fixed_arcs
                 << " fixed arcs contracted, " << stats_.nonzero_cost_arcs << " nonzero costs after gauge), scale 2^"
-                << k << " / 2^" << m << ", objective " << stats_.objective << ", violation " << stats_.max_violation
+                << k << " / 2^" << stats_.capacity_exponent << ", objective " << stats_.objective << ", violation " << stats_.max_violation
                 << (stats_.certified ? ", certified" : "") << "; build " << stats_.time_build << " s, solve "
                 << stats_.time_solve << " s\n";
     if(!(stats_.max_violation <= tolerance))
@@ -508,6 +553,383 @@ private:
                   std::to_string(stats_.max_violation));
     return true;
   }
+
+  // ---- MULTILEVEL --------------------------------------------------------------------------
+  // The optimal shifts are constant over large regions and the jumps concentrate on a few curves
+  // (the completed curve and the nonbounding loops), so the problem is solved on a hierarchy of
+  // contracted problems: clusters of nodes joined by free arcs without jump share one shift; the
+  // coarsest problem is solved whole, and each finer level only re-solves a band of nodes around
+  // the jumps of the coarser answer, with the rest of each level contracted (its jumps kept). The
+  // answer of the finest level is then certified on the whole problem by a circulation within the
+  // subdifferentials (a maximum flow, lemon::Preflow); where there is none, the barrier it returns marks where
+  // to widen the band, and the band is re-solved. Everything is exact in the scaled integers.
+
+  // a problem arc in scaled integers: J = sh + pi[L] - pi[R], cost w |J|, bounds lo <= J <= up
+  struct Int_arc
+  {
+    std::size_t L, R;
+    Int sh, w, lo, up;
+    bool has_lo, has_up;
+  };
+
+  // the circulation network of a list of arcs (the layout of step 5): J = sh + pi[L] - pi[R];
+  // reduced cost c + pi[tail] - pi[head]: R->L with cost x - sh is active when J > x, L->R with
+  // cost sh - x when J < x
+  static void make_network(const std::vector<Int_arc>& arcs, Int U, Network& net)
+  {
+    net = Network();
+    net.tail.reserve(3 * arcs.size()); net.head.reserve(3 * arcs.size());
+    net.cap.reserve(3 * arcs.size()); net.cost.reserve(3 * arcs.size());
+    for(const Int_arc& e : arcs)
+    {
+      const bool merge_up = e.has_up && e.up == 0, merge_lo = e.has_lo && e.lo == 0;
+      net.add(e.R, e.L, e.w + (merge_up ? U : 0), -e.sh);          // w (J)_+
+      net.add(e.L, e.R, e.w + (merge_lo ? U : 0), e.sh);           // w (-J)_+
+      if(e.has_up && !merge_up) net.add(e.R, e.L, U, e.up - e.sh);   // U (J - up)_+
+      if(e.has_lo && !merge_lo) net.add(e.L, e.R, U, e.sh - e.lo);   // U (lo - J)_+
+    }
+  }
+
+  // node -> incident arcs
+  struct Adjacency
+  {
+    std::vector<std::size_t> first, arc;
+    Adjacency(std::size_t n, const std::vector<Int_arc>& arcs) : first(n + 1, 0), arc(2 * arcs.size())
+    {
+      for(const Int_arc& e : arcs) { ++first[e.L + 1]; ++first[e.R + 1]; }
+      for(std::size_t v = 0; v < n; ++v) first[v + 1] += first[v];
+      std::vector<std::size_t> fill(first.begin(), first.end() - 1);
+      for(std::size_t i = 0; i < arcs.size(); ++i) { arc[fill[arcs[i].L]++] = i; arc[fill[arcs[i].R]++] = i; }
+    }
+  };
+
+  struct Level
+  {
+    std::size_t n = 0;
+    std::vector<Int_arc> arcs;
+    std::vector<std::size_t> parent;      // node -> node of the next coarser level
+    std::vector<std::size_t> component;   // node -> its connected component's first node
+  };
+
+  static bool contractible(const Int_arc& e) { return !e.has_lo && !e.has_up && e.sh == 0; }
+
+  static void find_components(Level& lv)
+  {
+    const Adjacency adj(lv.n, lv.arcs);
+    lv.component.assign(lv.n, npos);
+    std::vector<std::size_t> queue;
+    for(std::size_t r = 0; r < lv.n; ++r)
+    {
+      if(lv.component[r] != npos) continue;
+      lv.component[r] = r;
+      queue.assign(1, r);
+      for(std::size_t q = 0; q < queue.size(); ++q)
+        for(std::size_t k = adj.first[queue[q]]; k < adj.first[queue[q] + 1]; ++k)
+        {
+          const Int_arc& e = lv.arcs[adj.arc[k]];
+          const std::size_t y = e.L == queue[q] ? e.R : e.L;
+          if(lv.component[y] == npos) { lv.component[y] = r; queue.push_back(y); }
+        }
+    }
+  }
+
+  // clusters of at most `cap` nodes grown breadth first over contractible arcs; a node joins a
+  // cluster only if all its arcs into the cluster are contractible (then every jump inside the
+  // cluster is 0 when its nodes share one shift). Returns the number of clusters.
+  static std::size_t cluster_nodes(const Level& lv, std::size_t cap, std::vector<std::size_t>& cluster)
+  {
+    const Adjacency adj(lv.n, lv.arcs);
+    cluster.assign(lv.n, npos);
+    std::size_t nc = 0;
+    std::vector<std::size_t> members;
+    for(std::size_t seed = 0; seed < lv.n; ++seed)
+    {
+      if(cluster[seed] != npos) continue;
+      const std::size_t c = nc++;
+      cluster[seed] = c;
+      members.assign(1, seed);
+      for(std::size_t q = 0; q < members.size() && members.size() < cap; ++q)
+        for(std::size_t k = adj.first[members[q]]; k < adj.first[members[q] + 1] && members.size() < cap; ++k)
+        {
+          const Int_arc& e = lv.arcs[adj.arc[k]];
+          const std::size_t y = e.L == members[q] ? e.R : e.L;
+          if(cluster[y] != npos || !contractible(e)) continue;
+          bool ok = true;
+          for(std::size_t j = adj.first[y]; j < adj.first[y + 1] && ok; ++j)
+          {
+            const Int_arc& f = lv.arcs[adj.arc[j]];
+            ok = cluster[f.L == y ? f.R : f.L] != c || contractible(f);
+          }
+          if(!ok) continue;
+          cluster[y] = c;
+          members.push_back(y);
+        }
+    }
+    return nc;
+  }
+
+  // the next coarser level: clusters become nodes; arcs inside a cluster vanish (their jump is 0),
+  // parallel contractible arcs merge (their weights add)
+  static Level coarsen(const Level& lv, std::size_t nc)
+  {
+    Level next;
+    next.n = nc;
+    std::vector<Int_arc> free_arcs;
+    for(const Int_arc& e : lv.arcs)
+    {
+      Int_arc x = e;
+      x.L = lv.parent[e.L];
+      x.R = lv.parent[e.R];
+      if(x.L == x.R) continue;
+      if(contractible(x))
+      {
+        if(x.L > x.R) std::swap(x.L, x.R);   // w |pi[L] - pi[R]| is symmetric
+        free_arcs.push_back(x);
+      }
+      else
+        next.arcs.push_back(x);
+    }
+    std::sort(free_arcs.begin(), free_arcs.end(),
+              [](const Int_arc& a, const Int_arc& b) { return a.L != b.L ? a.L < b.L : a.R < b.R; });
+    for(std::size_t i = 0; i < free_arcs.size();)
+    {
+      Int_arc x = free_arcs[i];
+      for(++i; i < free_arcs.size() && free_arcs[i].L == x.L && free_arcs[i].R == x.R; ++i) x.w += free_arcs[i].w;
+      next.arcs.push_back(x);
+    }
+    find_components(next);
+    return next;
+  }
+
+  // one-sided derivatives of f(J) = w |J| + U dist(J, [lo, up])
+  static Int right_slope(const Int_arc& e, Int J, Int U)
+  {
+    Int d = J >= 0 ? e.w : -e.w;
+    if(e.has_up && J >= e.up) d += U;
+    if(e.has_lo && J < e.lo) d -= U;
+    return d;
+  }
+  static Int left_slope(const Int_arc& e, Int J, Int U)
+  {
+    Int d = J > 0 ? e.w : -e.w;
+    if(e.has_up && J > e.up) d += U;
+    if(e.has_lo && J <= e.lo) d -= U;
+    return d;
+  }
+  static Int tension(const Int_arc& e, const std::vector<Int>& pi) { return e.sh + pi[e.L] - pi[e.R]; }
+
+  // network simplex on a whole (small) problem, with the exact duality certificate
+  bool solve_whole(std::size_t n, const std::vector<Int_arc>& arcs, Int U, std::vector<Int>& pi, std::string& why)
+  {
+    stats_.largest_band = (std::max)(stats_.largest_band, n);
+    Network net;
+    make_network(arcs, U, net);
+    if(net.cap.empty()) { pi.assign(n, 0); return true; }
+    std::vector<Int> flow;
+    return run(NETWORK_SIMPLEX, n, net, pi, flow, why) && certify(net, pi, flow, why);
+  }
+
+  // pi[v] -= pi[first node of v's component]: keeps the potentials small across refinements
+  static void normalize(const Level& lv, std::vector<Int>& pi)
+  {
+    for(std::size_t v = 0; v < lv.n; ++v)
+      if(lv.component[v] != v) pi[v] -= pi[lv.component[v]];
+    for(std::size_t v = 0; v < lv.n; ++v)
+      if(lv.component[v] == v) pi[v] = 0;
+  }
+
+  // re-solves, exactly, the band of nodes within `radius` arcs of a nonzero jump or of a seed,
+  // every connected piece of the rest being contracted to one node: the unknowns are the changes
+  // of pi, so the band problem's jumps are the current tensions
+  bool refine(const Level& lv, Int U, std::vector<Int>& pi, const std::vector<char>& seed, int radius, std::string& why)
+  {
+    const Adjacency adj(lv.n, lv.arcs);
+    std::vector<int> dist(lv.n, -1);
+    std::vector<std::size_t> queue;
+    for(const Int_arc& e : lv.arcs)
+      if(tension(e, pi) != 0)
+      {
+        if(dist[e.L] < 0) { dist[e.L] = 0; queue.push_back(e.L); }
+        if(dist[e.R] < 0) { dist[e.R] = 0; queue.push_back(e.R); }
+      }
+    for(std::size_t v = 0; v < seed.size(); ++v)
+      if(seed[v] && dist[v] < 0) { dist[v] = 0; queue.push_back(v); }
+    for(std::size_t q = 0; q < queue.size(); ++q)
+    {
+      const std::size_t x = queue[q];
+      if(dist[x] >= radius) continue;
+      for(std::size_t k = adj.first[x]; k < adj.first[x + 1]; ++k)
+      {
+        const Int_arc& e = lv.arcs[adj.arc[k]];
+        const std::size_t y = e.L == x ? e.R : e.L;
+        if(dist[y] < 0) { dist[y] = dist[x] + 1; queue.push_back(y); }
+      }
+    }
+    // band nodes first, then one node per connected piece of the rest
+    std::vector<std::size_t> id(lv.n, npos);
+    std::size_t n = 0;
+    for(std::size_t v = 0; v < lv.n; ++v)
+      if(dist[v] >= 0) id[v] = n++;
+    for(std::size_t r = 0; r < lv.n; ++r)
+    {
+      if(id[r] != npos) continue;
+      id[r] = n;
+      queue.assign(1, r);
+      for(std::size_t q = 0; q < queue.size(); ++q)
+        for(std::size_t k = adj.first[queue[q]]; k < adj.first[queue[q] + 1]; ++k)
+        {
+          const Int_arc& e = lv.arcs[adj.arc[k]];
+          const std::size_t y = e.L == queue[q] ? e.R : e.L;
+          if(id[y] == npos) { id[y] = n; queue.push_back(y); }
+        }
+      ++n;
+    }
+    std::vector<Int_arc> sub;
+    for(const Int_arc& e : lv.arcs)
+    {
+      if(dist[e.L] < 0 && dist[e.R] < 0) continue;   // inside a contracted piece: jump 0, unchanged
+      Int_arc x = e;
+      x.L = id[e.L];
+      x.R = id[e.R];
+      x.sh = tension(e, pi);
+      sub.push_back(x);
+    }
+    std::vector<Int> delta;
+    if(!solve_whole(n, sub, U, delta, why)) return false;
+    for(std::size_t v = 0; v < lv.n; ++v) pi[v] += delta[id[v]];
+    normalize(lv, pi);
+    return true;
+  }
+
+  // optimality of pi on a level: true if a circulation x with f'-(J) <= x <= f'+(J) exists on every
+  // arc; otherwise false, with the nodes of a barrier (a set whose shifts can all rise with a
+  // negative slope of the cost) marked in `barrier`. As a maximum flow (lemon::Preflow): x = x0 + y
+  // with x0 = 0 where 0 is allowed (every arc without jump) and x0 = f'-(J) elsewhere, so only the
+  // few arcs with a jump create supplies; the source side of a minimum cut is a barrier.
+  static bool certify_by_circulation(const Level& lv, Int U, const std::vector<Int>& pi, std::vector<char>& barrier)
+  {
+    const std::size_t n = lv.n, na = lv.arcs.size();
+    std::vector<Int> lower(na), upper(na), x0(na);
+    std::vector<Wide> supply(n, Wide(0));
+    for(std::size_t i = 0; i < na; ++i)
+    {
+      const Int_arc& e = lv.arcs[i];
+      const Int J = tension(e, pi);
+      lower[i] = left_slope(e, J, U);
+      upper[i] = right_slope(e, J, U);
+      x0[i] = lower[i] <= 0 && 0 <= upper[i] ? 0 : lower[i];
+      supply[e.L] -= Wide(x0[i]);   // x0 leaves L and enters R
+      supply[e.R] += Wide(x0[i]);
+    }
+    Graph g;
+    g.reserveNode(int(n + 2));
+    g.reserveArc(int(2 * na + n));
+    for(std::size_t v = 0; v < n + 2; ++v) g.addNode();
+    const Graph::Node source = g.nodeFromId(int(n)), sink = g.nodeFromId(int(n + 1));
+    std::vector<Int> cap;
+    cap.reserve(2 * na + n);
+    for(std::size_t i = 0; i < na; ++i)
+    {
+      const Int_arc& e = lv.arcs[i];
+      g.addArc(g.nodeFromId(int(e.L)), g.nodeFromId(int(e.R)));   // arc 2i: x rises
+      cap.push_back(upper[i] - x0[i]);
+      g.addArc(g.nodeFromId(int(e.R)), g.nodeFromId(int(e.L)));   // arc 2i+1: x falls
+      cap.push_back(x0[i] - lower[i]);
+    }
+    Wide total = 0;
+    for(std::size_t v = 0; v < n; ++v)
+    {
+      if(supply[v] > 0) { g.addArc(source, g.nodeFromId(int(v))); cap.push_back(Int(supply[v])); total += supply[v]; }
+      else if(supply[v] < 0) { g.addArc(g.nodeFromId(int(v)), sink); cap.push_back(Int(-supply[v])); }
+    }
+    Graph::ArcMap<Int> capacity(g);
+    for(Graph::ArcIt a(g); a != lemon::INVALID; ++a) capacity[a] = cap[std::size_t(g.id(a))];
+    lemon::Preflow<Graph, Graph::ArcMap<Int>> preflow(g, capacity, source, sink);
+    preflow.run();
+    barrier.assign(n, 0);
+    if(Wide(preflow.flowValue()) != total)
+    {
+      for(std::size_t v = 0; v < n; ++v) barrier[v] = preflow.minCut(g.nodeFromId(int(v))) ? 1 : 0;
+      return false;
+    }
+    // check the certificate independently: bounds and conservation of x
+    std::vector<Wide> balance(n, Wide(0));
+    for(std::size_t i = 0; i < na; ++i)
+    {
+      const Int x = x0[i] + preflow.flow(g.arcFromId(int(2 * i))) - preflow.flow(g.arcFromId(int(2 * i + 1)));
+      if(x < lower[i] || x > upper[i]) return false;
+      balance[lv.arcs[i].L] -= Wide(x);
+      balance[lv.arcs[i].R] += Wide(x);
+    }
+    for(const Wide& b : balance)
+      if(b != 0) return false;
+    return true;
+  }
+
+  bool multilevel(std::size_t nn, std::vector<Int_arc> arcs, Int U, std::vector<Int>& pi, std::string& why)
+  {
+    std::vector<Level> levels(1);
+    levels[0].n = nn;
+    levels[0].arcs = std::move(arcs);
+    find_components(levels[0]);
+    {
+      // the circulation's excesses (sums of bounds up to U + w per arc) must fit in 63 bits
+      const Adjacency adj(nn, levels[0].arcs);
+      std::size_t max_degree = 0;
+      for(std::size_t v = 0; v < nn; ++v) max_degree = (std::max)(max_degree, adj.first[v + 1] - adj.first[v]);
+      if(Wide(max_degree + 1) * (Wide(U) + Wide(U)) >= Wide((std::numeric_limits<Int>::max)()))
+      { why = "a node has too many arcs for the certificate's integer range"; return false; }
+    }
+    while(levels.back().n > coarsest_nodes)
+    {
+      std::vector<std::size_t> cluster;
+      const std::size_t nc = cluster_nodes(levels.back(), cluster_size, cluster);
+      if(10 * nc > 8 * levels.back().n) break;   // coarsening stalls
+      levels.back().parent = std::move(cluster);
+      Level next = coarsen(levels.back(), nc);
+      levels.push_back(std::move(next));
+    }
+    stats_.levels = levels.size();
+    if(!solve_whole(levels.back().n, levels.back().arcs, U, pi, why)) return false;
+    normalize(levels.back(), pi);
+    const std::vector<char> no_seed;
+    for(std::size_t l = levels.size() - 1; l-- > 0;)
+    {
+      std::vector<Int> fine(levels[l].n);
+      for(std::size_t v = 0; v < levels[l].n; ++v) fine[v] = pi[levels[l].parent[v]];
+      pi.swap(fine);
+      if(!refine(levels[l], U, pi, no_seed, band_radius, why)) return false;
+    }
+    std::vector<char> barrier;
+    for(std::size_t round = 0; round < max_refinements; ++round)
+    {
+      const auto t0 = std::chrono::steady_clock::now();
+      const bool certified = certify_by_circulation(levels[0], U, pi, barrier);
+      if(verbose_)
+      {
+        std::size_t nb = 0;
+        for(char c : barrier) nb += c;
+        std::cerr << "[swn] multilevel: " << levels.size() << " levels (coarsest " << levels.back().n << " nodes), largest band "
+                  << stats_.largest_band << ", certificate " << (certified ? "found" : "refused") << " in " << seconds(t0)
+                  << " s" << (certified ? std::string() : ", barrier of " + std::to_string(nb) + " nodes") << "\n";
+      }
+      if(certified) { stats_.certified = true; return true; }
+      ++stats_.refinements;
+      // the band grows around the arcs that cross the barrier: the pieces of the rest stay free to
+      // shift, so the descent along the barrier is within reach of the band problem
+      std::vector<char> seed(nn, 0);
+      for(const Int_arc& e : levels[0].arcs)
+        if(barrier[e.L] != barrier[e.R]) seed[e.L] = seed[e.R] = 1;
+      if(!refine(levels[0], U, pi, seed, band_radius + int(round), why)) return false;
+    }
+    why = "the multilevel answer was not certified after " + std::to_string(max_refinements) + " refinements";
+    return false;
+  }
+
+  static constexpr std::size_t coarsest_nodes = 2000;
+  static constexpr std::size_t cluster_size = 8;
+  static constexpr int band_radius = 2;
+  static constexpr std::size_t max_refinements = 8;
 
   static bool has_wide_large_cost()
   {
