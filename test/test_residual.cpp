@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <limits>
 #include <map>
@@ -180,10 +181,9 @@ double glpk_optimum(const SWN::Residual_problem& P, std::vector<double>& sigma)
 
 // LEMON's sigma is feasible and optimal: its objective equals GLPK's optimum to 1e-7 relative and
 // is never larger; gauge faces get 0
-void expect_matches_glpk(const SWN::Residual_problem& P, Lemon::Algorithm algorithm, const std::string& what,
-                         double* lemon_objective = nullptr)
+void expect_solver_matches_glpk(Lemon& lemon, const SWN::Residual_problem& P, const std::string& what,
+                                double* lemon_objective = nullptr)
 {
-  Lemon lemon(algorithm);
   std::vector<double> sigma;
   ASSERT_TRUE(lemon.solve_residual(P, sigma)) << what << ": " << lemon.error();
   ASSERT_EQ(sigma.size(), P.number_of_faces);
@@ -201,8 +201,24 @@ void expect_matches_glpk(const SWN::Residual_problem& P, Lemon::Algorithm algori
   if(lemon_objective) *lemon_objective = ol;
 }
 
+void expect_matches_glpk(const SWN::Residual_problem& P, Lemon::Algorithm algorithm, const std::string& what,
+                         double* lemon_objective = nullptr)
+{
+  Lemon lemon(algorithm);
+  expect_solver_matches_glpk(lemon, P, what, lemon_objective);
+}
+
+// a multilevel solver whose hierarchy goes deep even on small problems
+void make_deep(Lemon& lemon, std::size_t max_refinements = 8)
+{
+  lemon.set_algorithm(Lemon::MULTILEVEL);
+  lemon.set_multilevel_parameters(12, 4, 1, max_refinements);
+}
+
 const Lemon::Algorithm all_algorithms[] = {Lemon::COST_SCALING_PUSH, Lemon::COST_SCALING_AUGMENT,
-                                          Lemon::COST_SCALING_PARTIAL_AUGMENT, Lemon::NETWORK_SIMPLEX};
+                                          Lemon::COST_SCALING_PARTIAL_AUGMENT, Lemon::NETWORK_SIMPLEX,
+                                          Lemon::MULTILEVEL};
+const unsigned n_algorithms = 5;
 
 // ---------------------------------------------------------------------------------------------
 // meshes
@@ -263,12 +279,14 @@ TEST(LemonResidual, NameAndDefaults)
 #ifdef CGAL_SWN_USE_LEMON
   static_assert(std::is_same<SI::Default_linear_program_traits, Lemon>::value, "LEMON is the default residual solver");
 #endif
-  // the default is network simplex, without fallback
+  // the default is the multilevel solver; a problem this small is its coarsest level (one network
+  // simplex, no hierarchy)
   const Random_problem rp = random_problem(11, true, 10., false);
   std::vector<double> sigma;
   ASSERT_TRUE(l.solve_residual(rp.P, sigma)) << l.error();
-  EXPECT_EQ(l.algorithm(), Lemon::NETWORK_SIMPLEX);
-  EXPECT_EQ(l.statistics().algorithm, Lemon::NETWORK_SIMPLEX);
+  EXPECT_EQ(l.algorithm(), Lemon::MULTILEVEL);
+  EXPECT_EQ(l.statistics().algorithm, Lemon::MULTILEVEL);
+  EXPECT_EQ(l.statistics().levels, 1u);
   EXPECT_FALSE(l.statistics().fallback);
   EXPECT_TRUE(l.statistics().certified);
   EXPECT_GE(l.statistics().cost_exponent, 30);
@@ -280,7 +298,7 @@ TEST(LemonResidual, RandomClosedProblemsMatchGLPK)
   {
     const Random_problem rp = random_problem(seed, true, 10., seed % 3 == 0);
     ASSERT_FALSE(rp.bounded.empty());
-    expect_matches_glpk(rp.P, all_algorithms[seed % 4], "closed s, seed " + std::to_string(seed));
+    expect_matches_glpk(rp.P, all_algorithms[seed % n_algorithms], "closed s, seed " + std::to_string(seed));
   }
 }
 
@@ -292,7 +310,7 @@ TEST(LemonResidual, RandomNonClosedProblemsWithLargeSMatchGLPK)
     double smax = 0;
     for(double s : rp.P.s) smax = std::max(smax, std::abs(s));
     EXPECT_GT(smax, 100.);
-    expect_matches_glpk(rp.P, all_algorithms[seed % 4], "non-closed s, seed " + std::to_string(seed));
+    expect_matches_glpk(rp.P, all_algorithms[seed % n_algorithms], "non-closed s, seed " + std::to_string(seed));
   }
 }
 
@@ -315,6 +333,55 @@ TEST(LemonResidual, AllAlgorithmsAgree)
     }
     for(double o : objectives) EXPECT_NEAR(o, objectives[0], 1e-10 * (1 + objectives[0]));
   }
+}
+
+// The multilevel solver with a deep hierarchy (coarsest level of 12 nodes, clusters of 4, bands of
+// radius 1): bands, refinements around barriers and the final certificate are all exercised, and
+// the optimum is GLPK's.
+TEST(LemonResidual, MultilevelHierarchyMatchesGLPK)
+{
+  std::size_t refined = 0, deep = 0;
+  for(unsigned seed = 1; seed <= 16; ++seed)
+  {
+    const bool closed = seed % 4 != 0;
+    const Random_problem rp = random_problem(300 + seed, closed, closed ? 10. : 100., seed % 3 == 0);
+    Lemon lemon;
+    make_deep(lemon);
+    expect_solver_matches_glpk(lemon, rp.P, "multilevel, seed " + std::to_string(seed));
+    const Lemon::Statistics& st = lemon.statistics();
+    if(!st.fallback)
+    {
+      EXPECT_EQ(st.algorithm, Lemon::MULTILEVEL);
+      EXPECT_GE(st.levels, 3u) << "seed " << seed;
+      EXPECT_LT(st.largest_band, rp.P.number_of_faces + 3) << "seed " << seed;
+      deep += st.levels >= 3;
+      refined += st.refinements > 0;
+    }
+  }
+  EXPECT_GE(deep, 12u);   // the hierarchy certified most answers without network simplex on the whole
+  EXPECT_GT(refined, 0u);   // and some only after a refinement around a barrier
+  std::printf("multilevel: %zu of 16 certified through the hierarchy, %zu after refinements\n", deep, refined);
+}
+
+// Without refinements, an answer the certificate refuses goes to network simplex on the whole:
+// the result is optimal either way.
+TEST(LemonResidual, MultilevelFallsBackToNetworkSimplex)
+{
+  std::size_t fallbacks = 0;
+  for(unsigned seed = 1; seed <= 16; ++seed)
+  {
+    const Random_problem rp = random_problem(400 + seed, true, 10., false);
+    Lemon lemon;
+    make_deep(lemon, 0);
+    lemon.set_multilevel_parameters(6, 8, 0, 0);   // coarse clusters, no band beyond the jumps
+    expect_solver_matches_glpk(lemon, rp.P, "multilevel without refinement, seed " + std::to_string(seed));
+    if(lemon.statistics().fallback)
+    {
+      ++fallbacks;
+      EXPECT_EQ(lemon.statistics().algorithm, Lemon::NETWORK_SIMPLEX);
+    }
+  }
+  EXPECT_GT(fallbacks, 0u);
 }
 
 TEST(LemonResidual, BoundsWithMultiplicityAndInfiniteBounds)
@@ -545,6 +612,12 @@ TEST(LemonResidual, PipelineInstancesMatchGLPK)
     double o = 0;
     expect_matches_glpk(P, Lemon::COST_SCALING_PUSH, "two tori", &o);
     EXPECT_GT(o, 0.);
+    Lemon lemon;
+    make_deep(lemon);
+    double o2 = 0;
+    expect_solver_matches_glpk(lemon, P, "two tori, multilevel", &o2);
+    EXPECT_NEAR(o2, o, 1e-9 * (1 + o));
+    EXPECT_GE(lemon.statistics().levels, 3u);
   }
 }
 

@@ -6,7 +6,9 @@
 
 #include <CGAL/Surface_winding_numbers/Residual_problem.h>
 
-#include <lemon/preflow.h>
+
+#include <boost/graph/adjacency_list.hpp>
+#include <boost/graph/boykov_kolmogorov_max_flow.hpp>
 #include <lemon/cost_scaling.h>
 #include <lemon/network_simplex.h>
 #include <lemon/smart_graph.h>
@@ -95,7 +97,7 @@ public:
     COST_SCALING_PUSH,             ///< `lemon::CostScaling`, method `PUSH` (see the warning)
     COST_SCALING_AUGMENT,          ///< `lemon::CostScaling`, method `AUGMENT` (see the warning)
     COST_SCALING_PARTIAL_AUGMENT,  ///< `lemon::CostScaling`, method `PARTIAL_AUGMENT` (see the warning)
-    MULTILEVEL                     ///< `NETWORK_SIMPLEX` on a hierarchy of contracted problems, certified by `lemon::Circulation` (see `default_algorithm()`)
+    MULTILEVEL                     ///< `NETWORK_SIMPLEX` on a hierarchy of contracted problems, certified by a maximum flow (the default; see below)
   };
 
   /// What the last call to `solve_residual()` did.
@@ -123,11 +125,29 @@ public:
     double time_recover = 0;             ///< seconds: sigma from the potentials, objective and violation
   };
 
-  /// the algorithm used by default: `NETWORK_SIMPLEX`. On the demo double torus with loops and its
-  /// subdivisions (35k, 140k, 560k faces) it took 0.5, 15 and 204 s, cost scaling (push) 2.1, 27
-  /// and 108 s (see `benchmark/residual_solvers.md`); it is the faster one up to about 200k faces,
-  /// and the one without known defects in LEMON 1.3.1 (see `Algorithm`).
-  static Algorithm default_algorithm() { return NETWORK_SIMPLEX; }
+  /*!
+  the algorithm used by default: `MULTILEVEL`.
+
+  The optimal shifts are constant over large regions and the jumps concentrate on a few curves (the
+  completion of the curve and the nonbounding loops). `MULTILEVEL` builds a hierarchy of
+  contracted problems (clusters of up to 8 faces joined by free arcs without jump share one shift;
+  parallel arcs merge), solves the coarsest one (at most 2000 nodes) with `NETWORK_SIMPLEX`, and on
+  each finer level re-solves only a band of nodes around the jumps of the coarser answer (every
+  connected piece of the rest contracted to one node). The optimal flows of these network simplex
+  runs are carried down the hierarchy, and on the finest level a maximum flow (Boykov-Kolmogorov,
+  Boost.Graph) completes them into a circulation within the subdifferentials of the objective:
+  that circulation is an exact certificate that the answer is optimal for the whole problem, and it
+  is checked independently (bounds and conservation, in integers). When no such circulation
+  exists, the minimum cut is a set of faces whose shifts can improve the objective; a band around
+  its border is re-solved and the certificate tried again. After `max_refinements` failed
+  certificates (see `set_multilevel_parameters()`), the whole problem goes to `NETWORK_SIMPLEX`
+  (`statistics().fallback`): the answer is always an optimum of the whole problem.
+
+  Measured on the demo double torus with loops and its subdivisions (35k, 140k, 560k faces; see
+  `benchmark/residual_solvers.md`): `MULTILEVEL` 0.27, 2.1 and 19 s, `NETWORK_SIMPLEX` 0.47, 14.6
+  and 204 s, same objectives. Most of `MULTILEVEL`'s time is the maximum flow of the certificate.
+  */
+  static Algorithm default_algorithm() { return MULTILEVEL; }
 
   /// creates a solver that uses `default_algorithm()`
   LEMON_residual_solver() : algorithm_(default_algorithm()) {}
@@ -153,6 +173,20 @@ public:
   void set_feasibility_tolerance(double t) { tolerance_ = t; }
   /// messages on standard error
   void set_verbose(bool b) { verbose_ = b; }
+  /*!
+  parameters of `MULTILEVEL`: the hierarchy stops at `coarsest_nodes` nodes (default 2000), clusters
+  have at most `cluster_size` nodes (default 8), bands reach `band_radius` arcs (default 2) beyond
+  the jumps, and at most `max_refinements` bands (default 8) are re-solved on the finest level before
+  the whole problem is handed to `NETWORK_SIMPLEX`. They change the running time, never the optimum.
+  */
+  void set_multilevel_parameters(std::size_t coarsest_nodes, std::size_t cluster_size, int band_radius,
+                                 std::size_t max_refinements)
+  {
+    coarsest_nodes_ = (std::max)(std::size_t(1), coarsest_nodes);
+    cluster_size_ = (std::max)(std::size_t(2), cluster_size);
+    band_radius_ = (std::max)(0, band_radius);
+    max_refinements_ = max_refinements;
+  }
 
   /// why the last solve failed (empty after a success)
   const std::string& error() const { return error_; }
@@ -201,10 +235,12 @@ private:
   {
     std::vector<std::size_t> tail, head;
     std::vector<Int> cap, cost;
+    std::vector<std::size_t> owner;   // the problem arc of each network arc (MULTILEVEL)
+    std::size_t current = 0;
     void add(std::size_t t, std::size_t h, Int c, Int k)
     {
       if(c <= 0) return;
-      tail.push_back(t); head.push_back(h); cap.push_back(c); cost.push_back(k);
+      tail.push_back(t); head.push_back(h); cap.push_back(c); cost.push_back(k); owner.push_back(current);
     }
   };
 
@@ -228,7 +264,7 @@ private:
       case COST_SCALING_AUGMENT: return "CostScaling/AUGMENT";
       case COST_SCALING_PARTIAL_AUGMENT: return "CostScaling/PARTIAL_AUGMENT";
       case NETWORK_SIMPLEX: return "NetworkSimplex/BLOCK_SEARCH";
-      case MULTILEVEL: return "Multilevel/NetworkSimplex+Circulation";
+      case MULTILEVEL: return "Multilevel/NetworkSimplex+MaxFlow";
     }
     return "?";
   }
@@ -472,8 +508,8 @@ private:
         stats_.algorithm = a;
         return recover(P, sigma, nn, pi, sigma0, roots, component, face_node, face_offset, k_simplex);
       }
-      if(!fallback_) return fail("LEMON residual solver: " + why);
-      if(verbose_) std::cerr << "[swn] LEMON " << algorithm_name(a) << ": " << why << "; trying " << algorithm_name(NETWORK_SIMPLEX) << "\n";
+      // not certified (or out of the integer range of the certificate): network simplex on the whole
+      if(verbose_) std::cerr << "[swn] LEMON " << algorithm_name(a) << ": " << why << "; solving with " << algorithm_name(NETWORK_SIMPLEX) << "\n";
       stats_.fallback = true;
       a = NETWORK_SIMPLEX;
     }
@@ -561,7 +597,7 @@ private:
   // coarsest problem is solved whole, and each finer level only re-solves a band of nodes around
   // the jumps of the coarser answer, with the rest of each level contracted (its jumps kept). The
   // answer of the finest level is then certified on the whole problem by a circulation within the
-  // subdifferentials (a maximum flow, lemon::Preflow); where there is none, the barrier it returns marks where
+  // subdifferentials (a maximum flow); where there is none, the barrier it returns marks where
   // to widen the band, and the band is re-solved. Everything is exact in the scaled integers.
 
   // a problem arc in scaled integers: J = sh + pi[L] - pi[R], cost w |J|, bounds lo <= J <= up
@@ -582,6 +618,7 @@ private:
     net.cap.reserve(3 * arcs.size()); net.cost.reserve(3 * arcs.size());
     for(const Int_arc& e : arcs)
     {
+      net.current = std::size_t(&e - arcs.data());
       const bool merge_up = e.has_up && e.up == 0, merge_lo = e.has_lo && e.lo == 0;
       net.add(e.R, e.L, e.w + (merge_up ? U : 0), -e.sh);          // w (J)_+
       net.add(e.L, e.R, e.w + (merge_lo ? U : 0), e.sh);           // w (-J)_+
@@ -609,6 +646,9 @@ private:
     std::vector<Int_arc> arcs;
     std::vector<std::size_t> parent;      // node -> node of the next coarser level
     std::vector<std::size_t> component;   // node -> its connected component's first node
+    std::vector<std::size_t> arc_parent;  // arc -> arc of the next coarser level (npos inside a cluster)
+    std::vector<signed char> arc_sign;    // -1 where the coarser arc runs the other way
+    std::vector<Int> x;                   // a flow within the subdifferentials at the level's answer
   };
 
   static bool contractible(const Int_arc& e) { return !e.has_lo && !e.has_up && e.sh == 0; }
@@ -670,35 +710,70 @@ private:
 
   // the next coarser level: clusters become nodes; arcs inside a cluster vanish (their jump is 0),
   // parallel contractible arcs merge (their weights add)
-  static Level coarsen(const Level& lv, std::size_t nc)
+  static Level coarsen(Level& lv, std::size_t nc)
   {
     Level next;
     next.n = nc;
-    std::vector<Int_arc> free_arcs;
-    for(const Int_arc& e : lv.arcs)
+    lv.arc_parent.assign(lv.arcs.size(), npos);
+    lv.arc_sign.assign(lv.arcs.size(), 1);
+    std::vector<std::size_t> free_arcs;   // fine arcs that become contractible coarse arcs
+    for(std::size_t i = 0; i < lv.arcs.size(); ++i)
     {
-      Int_arc x = e;
-      x.L = lv.parent[e.L];
-      x.R = lv.parent[e.R];
-      if(x.L == x.R) continue;
-      if(contractible(x))
+      const Int_arc& e = lv.arcs[i];
+      const std::size_t L = lv.parent[e.L], R = lv.parent[e.R];
+      if(L == R) continue;
+      if(contractible(e))
       {
-        if(x.L > x.R) std::swap(x.L, x.R);   // w |pi[L] - pi[R]| is symmetric
-        free_arcs.push_back(x);
+        if(L > R) lv.arc_sign[i] = -1;   // w |pi[L] - pi[R]| is symmetric
+        free_arcs.push_back(i);
       }
       else
-        next.arcs.push_back(x);
+      {
+        lv.arc_parent[i] = next.arcs.size();
+        next.arcs.push_back(e);
+        next.arcs.back().L = L;
+        next.arcs.back().R = R;
+      }
     }
-    std::sort(free_arcs.begin(), free_arcs.end(),
-              [](const Int_arc& a, const Int_arc& b) { return a.L != b.L ? a.L < b.L : a.R < b.R; });
+    auto key = [&](std::size_t i) {
+      const std::size_t L = lv.parent[lv.arcs[i].L], R = lv.parent[lv.arcs[i].R];
+      return std::make_pair((std::min)(L, R), (std::max)(L, R));
+    };
+    std::sort(free_arcs.begin(), free_arcs.end(), [&](std::size_t a, std::size_t b) { return key(a) < key(b); });
     for(std::size_t i = 0; i < free_arcs.size();)
     {
-      Int_arc x = free_arcs[i];
-      for(++i; i < free_arcs.size() && free_arcs[i].L == x.L && free_arcs[i].R == x.R; ++i) x.w += free_arcs[i].w;
+      const auto k = key(free_arcs[i]);
+      Int_arc x = lv.arcs[free_arcs[i]];
+      x.L = k.first;
+      x.R = k.second;
+      x.w = 0;
+      for(; i < free_arcs.size() && key(free_arcs[i]) == k; ++i)
+      {
+        x.w += lv.arcs[free_arcs[i]].w;
+        lv.arc_parent[free_arcs[i]] = next.arcs.size();
+      }
       next.arcs.push_back(x);
     }
     find_components(next);
     return next;
+  }
+
+  // the flow of a coarser level carried to the arcs of this one: a bundle's flow is shared in
+  // proportion to the weights (so |x| <= w when the bundle's |X| <= its weight), arcs inside a
+  // cluster get 0
+  static void prolong_flow(Level& lv, const Level& coarse)
+  {
+    lv.x.assign(lv.arcs.size(), 0);
+    for(std::size_t i = 0; i < lv.arcs.size(); ++i)
+    {
+      const std::size_t a = lv.arc_parent[i];
+      if(a == npos) continue;
+      const Int X = lv.arc_sign[i] * coarse.x[a];
+      if(contractible(lv.arcs[i]) && coarse.arcs[a].w > 0)
+        lv.x[i] = Int(Wide(X) * Wide(lv.arcs[i].w) / Wide(coarse.arcs[a].w));
+      else
+        lv.x[i] = X;
+    }
   }
 
   // one-sided derivatives of f(J) = w |J| + U dist(J, [lo, up])
@@ -719,14 +794,25 @@ private:
   static Int tension(const Int_arc& e, const std::vector<Int>& pi) { return e.sh + pi[e.L] - pi[e.R]; }
 
   // network simplex on a whole (small) problem, with the exact duality certificate
-  bool solve_whole(std::size_t n, const std::vector<Int_arc>& arcs, Int U, std::vector<Int>& pi, std::string& why)
+  // network simplex on a whole (small) problem, with the exact duality certificate; x gets the
+  // optimal flow of each problem arc (from L to R in the sense of the subdifferential: f'-(J) <= x
+  // <= f'+(J), a circulation)
+  bool solve_whole(std::size_t n, const std::vector<Int_arc>& arcs, Int U, std::vector<Int>& pi, std::vector<Int>& x,
+                   std::string& why)
   {
     stats_.largest_band = (std::max)(stats_.largest_band, n);
+    x.assign(arcs.size(), 0);
     Network net;
     make_network(arcs, U, net);
     if(net.cap.empty()) { pi.assign(n, 0); return true; }
     std::vector<Int> flow;
-    return run(NETWORK_SIMPLEX, n, net, pi, flow, why) && certify(net, pi, flow, why);
+    if(!(run(NETWORK_SIMPLEX, n, net, pi, flow, why) && certify(net, pi, flow, why))) return false;
+    for(std::size_t k = 0; k < flow.size(); ++k)
+    {
+      const Int_arc& e = arcs[net.owner[k]];
+      x[net.owner[k]] += net.tail[k] == e.R ? flow[k] : -flow[k];   // R->L arcs carry x > 0
+    }
+    return true;
   }
 
   // pi[v] -= pi[first node of v's component]: keeps the potentials small across refinements
@@ -741,7 +827,7 @@ private:
   // re-solves, exactly, the band of nodes within `radius` arcs of a nonzero jump or of a seed,
   // every connected piece of the rest being contracted to one node: the unknowns are the changes
   // of pi, so the band problem's jumps are the current tensions
-  bool refine(const Level& lv, Int U, std::vector<Int>& pi, const std::vector<char>& seed, int radius, std::string& why)
+  bool refine(Level& lv, Int U, std::vector<Int>& pi, const std::vector<char>& seed, int radius, std::string& why)
   {
     const Adjacency adj(lv.n, lv.arcs);
     std::vector<int> dist(lv.n, -1);
@@ -785,28 +871,35 @@ private:
       ++n;
     }
     std::vector<Int_arc> sub;
-    for(const Int_arc& e : lv.arcs)
+    std::vector<std::size_t> level_arc;
+    for(std::size_t i = 0; i < lv.arcs.size(); ++i)
     {
+      const Int_arc& e = lv.arcs[i];
       if(dist[e.L] < 0 && dist[e.R] < 0) continue;   // inside a contracted piece: jump 0, unchanged
       Int_arc x = e;
       x.L = id[e.L];
       x.R = id[e.R];
       x.sh = tension(e, pi);
       sub.push_back(x);
+      level_arc.push_back(i);
     }
-    std::vector<Int> delta;
-    if(!solve_whole(n, sub, U, delta, why)) return false;
+    std::vector<Int> delta, x;
+    if(!solve_whole(n, sub, U, delta, x, why)) return false;
     for(std::size_t v = 0; v < lv.n; ++v) pi[v] += delta[id[v]];
+    // the band's optimal flow is exact on its arcs; the arcs inside the pieces keep theirs
+    lv.x.resize(lv.arcs.size(), 0);
+    for(std::size_t k = 0; k < sub.size(); ++k) lv.x[level_arc[k]] = x[k];
     normalize(lv, pi);
     return true;
   }
 
   // optimality of pi on a level: true if a circulation x with f'-(J) <= x <= f'+(J) exists on every
   // arc; otherwise false, with the nodes of a barrier (a set whose shifts can all rise with a
-  // negative slope of the cost) marked in `barrier`. As a maximum flow (lemon::Preflow): x = x0 + y
-  // with x0 = 0 where 0 is allowed (every arc without jump) and x0 = f'-(J) elsewhere, so only the
-  // few arcs with a jump create supplies; the source side of a minimum cut is a barrier.
-  static bool certify_by_circulation(const Level& lv, Int U, const std::vector<Int>& pi, std::vector<char>& barrier)
+  // negative slope of the cost) marked in `barrier`. As a maximum flow (Boykov-Kolmogorov, from
+  // Boost.Graph) started from the level's flow lv.x clamped to the bounds: the flows carried down
+  // the hierarchy are nearly balanced, so only short paths remain to be found. The source side of a
+  // minimum cut is a barrier. lv.x gets the flow found (balanced on success).
+  static bool repair_flow(Level& lv, Int U, const std::vector<Int>& pi, std::vector<char>& barrier)
   {
     const std::size_t n = lv.n, na = lv.arcs.size();
     std::vector<Int> lower(na), upper(na), x0(na);
@@ -817,46 +910,56 @@ private:
       const Int J = tension(e, pi);
       lower[i] = left_slope(e, J, U);
       upper[i] = right_slope(e, J, U);
-      x0[i] = lower[i] <= 0 && 0 <= upper[i] ? 0 : lower[i];
+      const Int start = i < lv.x.size() ? lv.x[i] : 0;
+      x0[i] = (std::min)(upper[i], (std::max)(lower[i], start));
       supply[e.L] -= Wide(x0[i]);   // x0 leaves L and enters R
       supply[e.R] += Wide(x0[i]);
     }
-    Graph g;
-    g.reserveNode(int(n + 2));
-    g.reserveArc(int(2 * na + n));
-    for(std::size_t v = 0; v < n + 2; ++v) g.addNode();
-    const Graph::Node source = g.nodeFromId(int(n)), sink = g.nodeFromId(int(n + 1));
-    std::vector<Int> cap;
-    cap.reserve(2 * na + n);
+    typedef boost::adjacency_list_traits<boost::vecS, boost::vecS, boost::directedS> Traits;
+    typedef boost::adjacency_list<boost::vecS, boost::vecS, boost::directedS,
+      boost::property<boost::vertex_color_t, boost::default_color_type,
+      boost::property<boost::vertex_predecessor_t, Traits::edge_descriptor,
+      boost::property<boost::vertex_distance_t, long>>>,
+      boost::property<boost::edge_capacity_t, Int,
+      boost::property<boost::edge_residual_capacity_t, Int,
+      boost::property<boost::edge_reverse_t, Traits::edge_descriptor>>>> Flow_graph;
+    typedef boost::graph_traits<Flow_graph>::edge_descriptor Edge;
+    Flow_graph fg(n + 2);
+    auto capacity = get(boost::edge_capacity, fg);
+    auto reverse = get(boost::edge_reverse, fg);
+    auto residual = get(boost::edge_residual_capacity, fg);
+    auto add = [&](std::size_t u, std::size_t v, Int c, Int c_back) {
+      const Edge e = boost::add_edge(u, v, fg).first, r = boost::add_edge(v, u, fg).first;
+      capacity[e] = c; capacity[r] = c_back;
+      reverse[e] = r; reverse[r] = e;
+      return e;
+    };
+    std::vector<Edge> rise(na);
     for(std::size_t i = 0; i < na; ++i)
-    {
-      const Int_arc& e = lv.arcs[i];
-      g.addArc(g.nodeFromId(int(e.L)), g.nodeFromId(int(e.R)));   // arc 2i: x rises
-      cap.push_back(upper[i] - x0[i]);
-      g.addArc(g.nodeFromId(int(e.R)), g.nodeFromId(int(e.L)));   // arc 2i+1: x falls
-      cap.push_back(x0[i] - lower[i]);
-    }
+      rise[i] = add(lv.arcs[i].L, lv.arcs[i].R, upper[i] - x0[i], x0[i] - lower[i]);   // x = x0 + flow L->R
     Wide total = 0;
     for(std::size_t v = 0; v < n; ++v)
     {
-      if(supply[v] > 0) { g.addArc(source, g.nodeFromId(int(v))); cap.push_back(Int(supply[v])); total += supply[v]; }
-      else if(supply[v] < 0) { g.addArc(g.nodeFromId(int(v)), sink); cap.push_back(Int(-supply[v])); }
+      if(supply[v] > 0) { add(n, v, Int(supply[v]), 0); total += supply[v]; }
+      else if(supply[v] < 0) add(v, n + 1, Int(-supply[v]), 0);
     }
-    Graph::ArcMap<Int> capacity(g);
-    for(Graph::ArcIt a(g); a != lemon::INVALID; ++a) capacity[a] = cap[std::size_t(g.id(a))];
-    lemon::Preflow<Graph, Graph::ArcMap<Int>> preflow(g, capacity, source, sink);
-    preflow.run();
+    const Int value = boost::boykov_kolmogorov_max_flow(fg, n, n + 1);
+    // the flow found: within the bounds, balanced if the maximum flow meets every supply
+    lv.x.resize(na);
+    for(std::size_t i = 0; i < na; ++i) lv.x[i] = x0[i] + (capacity[rise[i]] - residual[rise[i]]);
     barrier.assign(n, 0);
-    if(Wide(preflow.flowValue()) != total)
+    if(Wide(value) != total)
     {
-      for(std::size_t v = 0; v < n; ++v) barrier[v] = preflow.minCut(g.nodeFromId(int(v))) ? 1 : 0;
+      // nodes reachable from the source in the residual graph: the source side of a minimum cut
+      auto color = get(boost::vertex_color, fg);
+      for(std::size_t v = 0; v < n; ++v) barrier[v] = color[v] == boost::black_color ? 1 : 0;
       return false;
     }
     // check the certificate independently: bounds and conservation of x
     std::vector<Wide> balance(n, Wide(0));
     for(std::size_t i = 0; i < na; ++i)
     {
-      const Int x = x0[i] + preflow.flow(g.arcFromId(int(2 * i))) - preflow.flow(g.arcFromId(int(2 * i + 1)));
+      const Int x = lv.x[i];
       if(x < lower[i] || x > upper[i]) return false;
       balance[lv.arcs[i].L] -= Wide(x);
       balance[lv.arcs[i].R] += Wide(x);
@@ -880,17 +983,18 @@ private:
       if(Wide(max_degree + 1) * (Wide(U) + Wide(U)) >= Wide((std::numeric_limits<Int>::max)()))
       { why = "a node has too many arcs for the certificate's integer range"; return false; }
     }
-    while(levels.back().n > coarsest_nodes)
+    while(levels.back().n > coarsest_nodes_)
     {
       std::vector<std::size_t> cluster;
-      const std::size_t nc = cluster_nodes(levels.back(), cluster_size, cluster);
+      const std::size_t nc = cluster_nodes(levels.back(), cluster_size_, cluster);
       if(10 * nc > 8 * levels.back().n) break;   // coarsening stalls
       levels.back().parent = std::move(cluster);
       Level next = coarsen(levels.back(), nc);
       levels.push_back(std::move(next));
     }
     stats_.levels = levels.size();
-    if(!solve_whole(levels.back().n, levels.back().arcs, U, pi, why)) return false;
+    if(!solve_whole(levels.back().n, levels.back().arcs, U, pi, levels.back().x, why)) return false;
+    if(levels.size() == 1) return true;   // certified by the duality of network simplex
     normalize(levels.back(), pi);
     const std::vector<char> no_seed;
     for(std::size_t l = levels.size() - 1; l-- > 0;)
@@ -898,38 +1002,49 @@ private:
       std::vector<Int> fine(levels[l].n);
       for(std::size_t v = 0; v < levels[l].n; ++v) fine[v] = pi[levels[l].parent[v]];
       pi.swap(fine);
-      if(!refine(levels[l], U, pi, no_seed, band_radius, why)) return false;
+      prolong_flow(levels[l], levels[l + 1]);
+      if(!refine(levels[l], U, pi, no_seed, l == 0 ? 2 * band_radius_ : band_radius_, why)) return false;
+      std::vector<Int>().swap(levels[l + 1].x);
+      // coarse levels: a few refinements around barriers (cheap there), the flow for the next level
+      // finest level: refinements until the certificate holds
+      const std::size_t rounds = l == 0 ? max_refinements_ : 0;
+      if(certify_level(levels, l, U, pi, rounds, why)) { if(l == 0) { stats_.certified = true; return true; } }
+      else if(!why.empty()) return false;
     }
+    why = "the multilevel answer was not certified after " + std::to_string(max_refinements_) + " refinements";
+    return false;
+  }
+
+  // repairs the flow of level l and re-solves bands around the barriers, at most `rounds` times;
+  // true if the flow is a certificate of optimality on the level. `why` is set on errors only.
+  bool certify_level(std::vector<Level>& levels, std::size_t l, Int U, std::vector<Int>& pi, std::size_t rounds,
+                     std::string& why)
+  {
+    Level& lv = levels[l];
     std::vector<char> barrier;
-    for(std::size_t round = 0; round < max_refinements; ++round)
+    for(std::size_t round = 0;; ++round)
     {
       const auto t0 = std::chrono::steady_clock::now();
-      const bool certified = certify_by_circulation(levels[0], U, pi, barrier);
+      const bool certified = repair_flow(lv, U, pi, barrier);
       if(verbose_)
       {
         std::size_t nb = 0;
         for(char c : barrier) nb += c;
-        std::cerr << "[swn] multilevel: " << levels.size() << " levels (coarsest " << levels.back().n << " nodes), largest band "
+        std::cerr << "[swn] multilevel: level " << l << " of " << levels.size() << " (" << lv.n << " nodes), largest band "
                   << stats_.largest_band << ", certificate " << (certified ? "found" : "refused") << " in " << seconds(t0)
                   << " s" << (certified ? std::string() : ", barrier of " + std::to_string(nb) + " nodes") << "\n";
       }
-      if(certified) { stats_.certified = true; return true; }
-      ++stats_.refinements;
+      if(certified) return true;
+      if(round >= rounds) return false;
+      if(l == 0) ++stats_.refinements;
       // the band grows around the arcs that cross the barrier: the pieces of the rest stay free to
       // shift, so the descent along the barrier is within reach of the band problem
-      std::vector<char> seed(nn, 0);
-      for(const Int_arc& e : levels[0].arcs)
+      std::vector<char> seed(lv.n, 0);
+      for(const Int_arc& e : lv.arcs)
         if(barrier[e.L] != barrier[e.R]) seed[e.L] = seed[e.R] = 1;
-      if(!refine(levels[0], U, pi, seed, band_radius + int(round), why)) return false;
+      if(!refine(lv, U, pi, seed, band_radius_ + int(round), why)) return false;
     }
-    why = "the multilevel answer was not certified after " + std::to_string(max_refinements) + " refinements";
-    return false;
   }
-
-  static constexpr std::size_t coarsest_nodes = 2000;
-  static constexpr std::size_t cluster_size = 8;
-  static constexpr int band_radius = 2;
-  static constexpr std::size_t max_refinements = 8;
 
   static bool has_wide_large_cost()
   {
@@ -1043,6 +1158,8 @@ private:
   static constexpr int max_cost_exponent = 42;
 
   Algorithm algorithm_;
+  std::size_t coarsest_nodes_ = 2000, cluster_size_ = 8, max_refinements_ = 8;
+  int band_radius_ = 2;
   bool fallback_ = false;
   bool verbose_ = false;
   double tolerance_ = 1e-9;
