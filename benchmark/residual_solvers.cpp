@@ -1,6 +1,6 @@
 // Residual solvers (Eq. 11) on a real case: LEMON network flows vs GLPK's simplex.
 //
-//   residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--augment 0|1] [--scaling 0|1] [--simplex 0|1] [--cut 0|1] [--verbose]
+//   residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--augment 0|1] [--scaling 0|1] [--simplex 0|1] [--multilevel 0|1] [--table 0|1] [--verbose]
 //
 // Reads the mesh and its curves like the swn tool (OBJ `l` lines and/or a curve file), cuts the mesh
 // so that the curves lie on edges, optionally subdivides it N times 1-to-4 at the edge midpoints
@@ -114,7 +114,7 @@ static double now()
 int main(int argc, char** argv)
 {
   std::string mesh_file, curve_file;
-  bool run_glpk = true, run_whole = true, run_augment = true, run_scaling = true, run_simplex = true, run_cut = true, verbose = false;
+  bool run_glpk = true, run_whole = true, run_augment = true, run_scaling = true, run_simplex = true, run_cut = true, run_table = false, verbose = false;
   int repeat = 3, subdivisions = 0;
   for(int i = 1; i < argc; ++i)
   {
@@ -127,11 +127,12 @@ int main(int argc, char** argv)
     else if(a == "--augment" && i + 1 < argc) run_augment = std::atoi(argv[++i]) != 0;
     else if(a == "--scaling" && i + 1 < argc) run_scaling = std::atoi(argv[++i]) != 0;
     else if(a == "--simplex" && i + 1 < argc) run_simplex = std::atoi(argv[++i]) != 0;
-    else if(a == "--cut" && i + 1 < argc) run_cut = std::atoi(argv[++i]) != 0;
+    else if(a == "--multilevel" && i + 1 < argc) run_cut = std::atoi(argv[++i]) != 0;
+    else if(a == "--table" && i + 1 < argc) run_table = std::atoi(argv[++i]) != 0;
     else if(a == "--verbose") verbose = true;
     else mesh_file = a;
   }
-  if(mesh_file.empty()) { std::fprintf(stderr, "usage: residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--augment 0|1] [--scaling 0|1] [--simplex 0|1] [--cut 0|1] [--verbose]\n"); return 2; }
+  if(mesh_file.empty()) { std::fprintf(stderr, "usage: residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--augment 0|1] [--scaling 0|1] [--simplex 0|1] [--multilevel 0|1] [--table 0|1] [--verbose]\n"); return 2; }
 
   Mesh input;
   const SIO::Mesh_read_info info = SIO::read_mesh(mesh_file, input);
@@ -150,7 +151,7 @@ int main(int argc, char** argv)
   // 1. whole solves
   std::vector<int> labels0, G0;
   SWN::Residual_problem P;
-  auto whole = [&](auto& solver, const char* name) {
+  auto whole_np = [&](auto& solver, const char* name, const auto& extra) {
     auto labels = mesh.add_property_map<Mesh::Face_index, int>("f:label", 0).first;
     auto G = mesh.add_property_map<Mesh::Edge_index, int>("e:G", 0).first;
     SWN::Solve_report rep;
@@ -158,19 +159,24 @@ int main(int argc, char** argv)
     const bool ok = CGAL::surface_winding_numbers(mesh, chain, labels,
                                                   SWN::parameters::lp_solver(std::ref(solver),
                                                   SWN::parameters::report(std::ref(rep),
-                                                  SWN::parameters::nonbounding_chain_map(G))));
+                                                  SWN::parameters::nonbounding_chain_map(G, extra))));
     const double t = now() - t0;
     std::vector<int> l, g;
     for(auto f : faces(mesh)) l.push_back(labels[f]);
     for(auto e : edges(mesh)) g.push_back(G[e]);
     const bool first = labels0.empty();
     if(first) { labels0 = l; G0 = g; }
-    std::printf("whole solve %-36s ok %d  total %8.3f s (report %8.3f)  residual %8.3f s  objective %.12f  %s\n", name, int(ok), t,
-                rep.time_total, rep.time_residual, rep.lp_objective,
-                first ? "(reference labels/G)" : (l == labels0 && g == G0 ? "labels and G identical" : "LABELS OR G DIFFER"));
+    std::size_t moved = 0;   // faces whose label differs from the reference
+    for(std::size_t f = 0; f < l.size() && !first; ++f) moved += l[f] != labels0[f];
+    std::printf("whole solve %-36s ok %d  total %8.3f s (report %8.3f)  jump Laplace %7.3f  hodge %7.3f  residual %8.3f s  "
+                "second %7.3f  total/jump %5.1f  objective %.12f  %s (%zu faces differ)\n", name, int(ok), t,
+                rep.time_total, rep.time_jump_laplace, rep.time_hodge, rep.time_residual, rep.time_second_solve,
+                rep.time_total / rep.time_jump_laplace, rep.lp_objective,
+                first ? "(reference labels/G)" : (l == labels0 && g == G0 ? "labels and G identical" : "LABELS OR G DIFFER"), moved);
     mesh.remove_property_map(labels);
     mesh.remove_property_map(G);
   };
+  auto whole = [&](auto& solver, const char* name) { whole_np(solver, name, CGAL::parameters::default_values()); };
   std::vector<Lemon::Algorithm> algorithms = {Lemon::NETWORK_SIMPLEX, Lemon::MULTILEVEL};
   std::vector<const char*> names = {"lemon NetworkSimplex/BLOCK_SEARCH", "lemon Multilevel"};
   if(run_scaling)
@@ -189,6 +195,13 @@ int main(int argc, char** argv)
     Recorder<Lemon> rec{lemon, {}};
     whole(rec, names[k]);
     if(k == 0) P = rec.problem;
+  }
+  if(run_table)
+  {
+    // the default residual solver with Eigen's LDLT instead of CHOLMOD, and the reduced residual
+    Lemon lemon;
+    whole_np(lemon, "lemon Multilevel + Eigen LDLT", CGAL::parameters::sparse_linear_solver(SWN::internal::Eigen_LDLT_sparse_solver()));
+    whole_np(lemon, "lemon Multilevel, reduced residual", SWN::parameters::use_reduced_residual(true));
   }
   if(run_glpk && run_whole)
   {

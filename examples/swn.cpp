@@ -42,8 +42,10 @@ static const char* usage =
   "  --output-dir DIR       write labels.txt, mesh.ply, w.obj, bounding.obj, nonbounding.obj,\n"
   "                         completed.obj and summary.json to DIR (created; written atomically)\n"
   "  --epsilon X            relative cost of residual jumps across the curve (default 0.01)\n"
-  "  --lp-solver NAME       solver of the residual problem (Eq. 11): lemon (exact min-cost flow, the\n"
-  "                         default when built with LEMON) or glpk (simplex)\n"
+  "  --lp-solver NAME       solver of the residual problem (Eq. 11), all exact: lemon (multilevel\n"
+  "                         min-cost flow with an optimality certificate, the default when built with\n"
+  "                         LEMON), lemon-simplex (LEMON's network simplex on the whole problem) or\n"
+  "                         glpk (simplex)\n"
   "  --reduced-residual     approximate the residual LP by the paper's reduced problem (Sec. 6): gaps\n"
   "                         closed by shortest paths, one shift per region (faster, approximate)\n"
   "  --linear-solver NAME   sparse Cholesky solver: cholmod (SuiteSparse, the default when built with it)\n"
@@ -124,8 +126,8 @@ Options parse_arguments(int argc, char** argv)
   if(o.help) return o;
   if(o.mesh.empty()) throw Usage_error("no mesh file given");
 #ifdef CGAL_SWN_USE_LEMON
-  if(o.lp_solver != "glpk" && o.lp_solver != "lemon")
-    throw Usage_error("unknown --lp-solver '" + o.lp_solver + "' (available: lemon, glpk)");
+  if(o.lp_solver != "glpk" && o.lp_solver != "lemon" && o.lp_solver != "lemon-simplex")
+    throw Usage_error("unknown --lp-solver '" + o.lp_solver + "' (available: lemon, lemon-simplex, glpk)");
 #else
   if(o.lp_solver != "glpk") throw Usage_error("unknown --lp-solver '" + o.lp_solver + "' (available: glpk)");
 #endif
@@ -228,8 +230,9 @@ int main(int argc, char** argv)
   bool ok = false;
   SWN::GLPK_linear_program_traits glpk;
 #ifdef CGAL_SWN_USE_LEMON
-  SWN::LEMON_residual_solver lemon;
-  if(opt.lp_solver == "lemon") ok = solve_with(lemon);
+  SWN::LEMON_residual_solver lemon(opt.lp_solver == "lemon-simplex" ? SWN::LEMON_residual_solver::NETWORK_SIMPLEX
+                                                                     : SWN::LEMON_residual_solver::default_algorithm());
+  if(opt.lp_solver == "lemon" || opt.lp_solver == "lemon-simplex") ok = solve_with(lemon);
   else
 #endif
     ok = solve_with(glpk);

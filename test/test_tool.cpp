@@ -258,6 +258,14 @@ TEST(Tool, LpBackendsGiveTheSameLabels)
   ASSERT_EQ(run(args + "'" + b.string() + "' --lp-solver glpk --linear-solver ldlt").status, 0);
   EXPECT_EQ(read_labels(a / "labels.txt"), read_labels(b / "labels.txt"));
   EXPECT_EQ(slurp((a / "nonbounding.obj").string()), slurp((b / "nonbounding.obj").string()));
+#ifdef CGAL_SWN_USE_LEMON
+  // LEMON's network simplex on the whole problem: the same optimum as the default multilevel solver
+  const fs::path c = fresh_dir("phi_simplex");
+  ASSERT_EQ(run(args + "'" + c.string() + "' --lp-solver lemon-simplex").status, 0);
+  EXPECT_EQ(read_labels(a / "labels.txt"), read_labels(c / "labels.txt"));
+  EXPECT_EQ(slurp((a / "nonbounding.obj").string()), slurp((c / "nonbounding.obj").string()));
+  fs::remove_all(c);
+#endif
   fs::remove_all(a);
   fs::remove_all(b);
 }

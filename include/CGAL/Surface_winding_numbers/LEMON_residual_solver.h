@@ -55,10 +55,12 @@ optimal node potentials of the circulation are an optimal `sigma`. The solver
   jumps of order 1). \f$ m \f$ makes the sum of all capacities at most \f$ 2^{58} \f$. The jump
   of every arc is then exact up to \f$ 2^{-k-1} \f$ (\f$ 1.1 \cdot 10^{-13} \f$ at
   \f$ k = 42 \f$), and each weight up to \f$ 2^{-m-1} \f$ in absolute value;
-- solves the circulation with LEMON's `NetworkSimplex` (or, on request, `CostScaling`: see
-  `Algorithm`), checks that the flow is a circulation within the capacities and, where the
-  compiler has 128-bit integers, the exact duality certificate (the penalized objective of the
-  potentials equals minus the cost of the flow), and fails if a check fails;
+- solves the circulation with LEMON's `NetworkSimplex`, either on the whole problem
+  (`NETWORK_SIMPLEX`) or on a hierarchy of contracted problems whose answer is then certified by a
+  maximum flow (`MULTILEVEL`, the default; see `default_algorithm()`), or, on request, with
+  `CostScaling` (see `Algorithm`); checks that each flow is a circulation within the capacities
+  and, where the compiler has 128-bit integers, the exact duality certificate (the penalized
+  objective of the potentials equals minus the cost of the flow), and fails if a check fails;
 - recovers `sigma` from the potentials (differences taken in integers before the conversion), and
   shifts each component so that its face listed in `gauge_faces` gets 0; faces without any
   constraining arc get 0 (up to the offsets of fixed arcs).
@@ -69,10 +71,11 @@ other, if the data are too large for the integer scaling, if no algorithm return
 optimum, or if the problem is infeasible. In the last case `sigma` holds the solution of least
 penalized violation, and `statistics().max_violation` tells by how much it violates the bounds.
 
-On the demo double torus with loops (35k faces) the residual problem takes 0.5 s with the default
-algorithm, against 117 to 250 s with GLPK's dual simplex on the same (shared) machine; the
-objectives agree to \f$ 10^{-11} \f$ (see `benchmark/residual_solvers.md` in the source tree). The class is not copyable: pass it with
-`std::ref()` to the named parameter `lp_solver`.
+On the demo double torus with loops (35k faces) the residual problem takes 0.15 s with the default
+algorithm (`MULTILEVEL`), 0.42 s with `NETWORK_SIMPLEX` and 117 to 250 s with GLPK's dual simplex
+on the same machine; the objectives agree to \f$ 10^{-11} \f$ (see `benchmark/residual_solvers.md`
+in the source tree). The class is not copyable: pass it with `std::ref()` to the named parameter
+`lp_solver`.
 
 \cgalModels `SurfaceWindingNumbersResidualSolver`
 */
@@ -93,7 +96,7 @@ public:
   */
   enum Algorithm
   {
-    NETWORK_SIMPLEX,               ///< `lemon::NetworkSimplex`, pivot rule `BLOCK_SEARCH` (the default)
+    NETWORK_SIMPLEX,               ///< `lemon::NetworkSimplex` on the whole problem, pivot rule `BLOCK_SEARCH`
     COST_SCALING_PUSH,             ///< `lemon::CostScaling`, method `PUSH` (see the warning)
     COST_SCALING_AUGMENT,          ///< `lemon::CostScaling`, method `AUGMENT` (see the warning)
     COST_SCALING_PARTIAL_AUGMENT,  ///< `lemon::CostScaling`, method `PARTIAL_AUGMENT` (see the warning)
