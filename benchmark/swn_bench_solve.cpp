@@ -1,6 +1,6 @@
 // swn_bench_solve: solves one benchmark case in process and prints one JSON line of metrics.
 //
-//   swn_bench_solve CASE_DIR MESH_FILE [--check-api] [--lp default|glpk] [--epsilon X]
+//   swn_bench_solve CASE_DIR MESH_FILE [--check-api] [--lp default|glpk|reduced] [--epsilon X]
 //
 // Reads the mesh and CASE_DIR/curve.txt with the package's readers (IO::read_mesh, IO::read_curve_file,
 // IO::vertex_curve_chain), runs the public API (Surface_winding_numbers_solver::solve with the default
@@ -171,7 +171,7 @@ int main(int argc, char** argv)
 {
   if(argc < 3)
   {
-    std::cerr << "usage: swn_bench_solve CASE_DIR MESH_FILE [--check-api] [--lp default|glpk] [--epsilon X]\n";
+    std::cerr << "usage: swn_bench_solve CASE_DIR MESH_FILE [--check-api] [--lp default|glpk|reduced] [--epsilon X]\n";
     return 2;
   }
   const std::string dir = argv[1], mesh_file = argv[2];
@@ -223,6 +223,11 @@ int main(int argc, char** argv)
       ok = solver.solve(chain, labels, SWN::parameters::nonbounding_chain_map(G, SWN::parameters::report(std::ref(rep), SWN::parameters::lp_solver(std::ref(lp), SWN::parameters::epsilon(epsilon)))));
     }
 #endif
+    else if(lp_name == "reduced")   // the paper's reduced residual (Sec. 6) with the default solver
+    {
+      lp_backend += "+reduced";
+      ok = solver.solve(chain, labels, SWN::parameters::nonbounding_chain_map(G, SWN::parameters::report(std::ref(rep), SWN::parameters::use_reduced_residual(true, SWN::parameters::epsilon(epsilon)))));
+    }
     else throw std::runtime_error("unknown --lp " + lp_name);
     const long rss_after_swn = peak_rss_kb();
 

@@ -979,7 +979,8 @@ private:
     levels[0].arcs = std::move(arcs);
     find_components(levels[0]);
     {
-      // the circulation's excesses (sums of bounds up to U + w per arc) must fit in 63 bits
+      // the maximum flow's capacities (up to 2 (U + w) per arc) and supplies (their sums at a node)
+      // must fit in 63 bits
       const Adjacency adj(nn, levels[0].arcs);
       std::size_t max_degree = 0;
       for(std::size_t v = 0; v < nn; ++v) max_degree = (std::max)(max_degree, adj.first[v + 1] - adj.first[v]);
@@ -1008,8 +1009,8 @@ private:
       prolong_flow(levels[l], levels[l + 1]);
       if(!refine(levels[l], U, pi, no_seed, l == 0 ? 2 * band_radius_ : band_radius_, why)) return false;
       std::vector<Int>().swap(levels[l + 1].x);
-      // coarse levels: a few refinements around barriers (cheap there), the flow for the next level
-      // finest level: refinements until the certificate holds
+      // coarse levels: only the repaired flow, as the start of the next level's flow (refinement
+      // rounds there did not pay off); finest level: refinements until the certificate holds
       const std::size_t rounds = l == 0 ? max_refinements_ : 0;
       if(certify_level(levels, l, U, pi, rounds, why)) { if(l == 0) { stats_.certified = true; return true; } }
       else if(!why.empty()) return false;
