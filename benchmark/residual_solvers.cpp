@@ -1,6 +1,6 @@
 // Residual solvers (Eq. 11) on a real case: LEMON network flows vs GLPK's simplex.
 //
-//   residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--augment 0|1] [--scaling 0|1] [--simplex 0|1] [--multilevel 0|1] [--table 0|1] [--verbose]
+//   residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--augment 0|1] [--scaling 0|1] [--simplex 0|1] [--multilevel 0|1] [--table 0|1] [--ml-radius R] [--ml-cluster C] [--verbose]
 //
 // Reads the mesh and its curves like the swn tool (OBJ `l` lines and/or a curve file), cuts the mesh
 // so that the curves lie on edges, optionally subdivides it N times 1-to-4 at the edge midpoints
@@ -115,6 +115,7 @@ int main(int argc, char** argv)
 {
   std::string mesh_file, curve_file;
   bool run_glpk = true, run_whole = true, run_augment = true, run_scaling = true, run_simplex = true, run_cut = true, run_table = false, verbose = false;
+  int ml_radius = 2, ml_cluster = 8;
   int repeat = 3, subdivisions = 0;
   for(int i = 1; i < argc; ++i)
   {
@@ -128,11 +129,13 @@ int main(int argc, char** argv)
     else if(a == "--scaling" && i + 1 < argc) run_scaling = std::atoi(argv[++i]) != 0;
     else if(a == "--simplex" && i + 1 < argc) run_simplex = std::atoi(argv[++i]) != 0;
     else if(a == "--multilevel" && i + 1 < argc) run_cut = std::atoi(argv[++i]) != 0;
+    else if(a == "--ml-radius" && i + 1 < argc) ml_radius = std::atoi(argv[++i]);
+    else if(a == "--ml-cluster" && i + 1 < argc) ml_cluster = std::atoi(argv[++i]);
     else if(a == "--table" && i + 1 < argc) run_table = std::atoi(argv[++i]) != 0;
     else if(a == "--verbose") verbose = true;
     else mesh_file = a;
   }
-  if(mesh_file.empty()) { std::fprintf(stderr, "usage: residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--augment 0|1] [--scaling 0|1] [--simplex 0|1] [--multilevel 0|1] [--table 0|1] [--verbose]\n"); return 2; }
+  if(mesh_file.empty()) { std::fprintf(stderr, "usage: residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--augment 0|1] [--scaling 0|1] [--simplex 0|1] [--multilevel 0|1] [--table 0|1] [--ml-radius R] [--ml-cluster C] [--verbose]\n"); return 2; }
 
   Mesh input;
   const SIO::Mesh_read_info info = SIO::read_mesh(mesh_file, input);
@@ -217,6 +220,7 @@ int main(int argc, char** argv)
   for(int k = 0; k < n_algorithms; ++k)
   {
     Lemon lemon(algorithms[k]);
+    lemon.set_multilevel_parameters(2000, std::size_t(ml_cluster), ml_radius, 8);
     lemon.set_fallback(false);
     lemon.set_verbose(verbose);
     double best = 1e300;
