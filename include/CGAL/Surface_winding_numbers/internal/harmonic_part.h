@@ -25,9 +25,10 @@ public:
   using Matrix = typename LA::Matrix;
   using Vector = typename LA::Vector;
 
+  // assembled() becomes true only after a successful factorization
   void assemble(const Mesh_tables& m, const std::vector<double>& star)
   {
-    m_ = &m;
+    m_ = nullptr;
     star_ = &star;
     dof_.assign(m.nf, npos);
     std::size_t n = 0;
@@ -39,7 +40,7 @@ public:
     }
     n_ = n;
     la_.reset(new LA());
-    if(n == 0) return;
+    if(n == 0) { m_ = &m; return; }
     A_.reset(new Matrix(static_cast<int>(n), static_cast<int>(n)));
     for(std::size_t e = 0; e < m.ne; ++e)
       for(std::size_t i = m.edge_side_begin[e]; i < m.edge_side_begin[e + 1]; ++i)
@@ -52,6 +53,7 @@ public:
         }
     double D = 1;
     if(!la_->factor(*A_, D)) throw Solver_failure("factorization of the 2-form Laplacian failed");
+    m_ = &m;
   }
 
   // Harmonic part gamma of omega (paper Eq. 9, Sec. 3.3): the coexact part delta beta is removed by
