@@ -8,7 +8,9 @@
 #
 # BENCH_BINARY: benchmark/residual_solvers.cpp built as in benchmark/residual_solvers.md
 # (default build-lemon/bench/residual_solvers). The chain6 instance needs the benchmark's mesh
-# cache (benchmark/run --full builds it in build-bench/mesh-cache).
+# cache (benchmark/run --full builds it in build-bench/mesh-cache), the chain10 one (1.15M faces,
+# genus 10) the "large" suite of the generator (about 1 min):
+#   build-bench/swn_bench_gen --suite large --out build-bench/cases-large --mesh-cache "$PWD/build-bench/mesh-cache"
 set -euo pipefail
 cd "$(dirname "$0")/.."
 B=${1:-build-lemon/bench/residual_solvers}
@@ -32,4 +34,8 @@ fi
 run dtwl-560k      $D/DoubleTorusWithLoops.obj --subdivide 2 --scaling 0 --simplex 0 --table 1 --glpk 0 --repeat 1
 if [ -f "$CH" ]; then
   run chain6-752k  $CH --curve $OUT/chain6_80k_r0_g05.curve.txt --subdivide 1 --scaling 0 --simplex 0 --table 1 --glpk 0 --repeat 1
+fi
+C10=build-bench/mesh-cache/chain10_500k_500000.off
+if [ -f "$C10" ]; then
+  run chain10-1154k $C10 --curve $OUT/chain10_500k_r0_g05.curve.txt --scaling 0 --simplex 0 --table 1 --glpk 0 --repeat 1
 fi
