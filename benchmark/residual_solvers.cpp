@@ -1,6 +1,6 @@
 // Residual solvers (Eq. 11) on a real case: LEMON network flows vs GLPK's simplex.
 //
-//   residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--augment 0|1] [--scaling 0|1] [--simplex 0|1] [--multilevel 0|1] [--table 0|1] [--ml-radius R] [--ml-cluster C] [--verbose]
+//   residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--augment 0|1] [--scaling 0|1] [--simplex 0|1] [--multilevel 0|1] [--table 0|1] [--ml-radius R] [--ml-cluster C] [--mf-budget W] [--verbose]
 //
 // Reads the mesh and its curves like the swn tool (OBJ `l` lines and/or a curve file), cuts the mesh
 // so that the curves lie on edges, optionally subdivides it N times 1-to-4 at the edge midpoints
@@ -116,6 +116,7 @@ int main(int argc, char** argv)
   std::string mesh_file, curve_file;
   bool run_glpk = true, run_whole = true, run_augment = true, run_scaling = true, run_simplex = true, run_cut = true, run_table = false, verbose = false;
   int ml_radius = 2, ml_cluster = 8;
+  double mf_budget = 200;
   int repeat = 3, subdivisions = 0;
   for(int i = 1; i < argc; ++i)
   {
@@ -131,11 +132,12 @@ int main(int argc, char** argv)
     else if(a == "--multilevel" && i + 1 < argc) run_cut = std::atoi(argv[++i]) != 0;
     else if(a == "--ml-radius" && i + 1 < argc) ml_radius = std::atoi(argv[++i]);
     else if(a == "--ml-cluster" && i + 1 < argc) ml_cluster = std::atoi(argv[++i]);
+    else if(a == "--mf-budget" && i + 1 < argc) mf_budget = std::atof(argv[++i]);
     else if(a == "--table" && i + 1 < argc) run_table = std::atoi(argv[++i]) != 0;
     else if(a == "--verbose") verbose = true;
     else mesh_file = a;
   }
-  if(mesh_file.empty()) { std::fprintf(stderr, "usage: residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--augment 0|1] [--scaling 0|1] [--simplex 0|1] [--multilevel 0|1] [--table 0|1] [--ml-radius R] [--ml-cluster C] [--verbose]\n"); return 2; }
+  if(mesh_file.empty()) { std::fprintf(stderr, "usage: residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--augment 0|1] [--scaling 0|1] [--simplex 0|1] [--multilevel 0|1] [--table 0|1] [--ml-radius R] [--ml-cluster C] [--mf-budget W] [--verbose]\n"); return 2; }
 
   Mesh input;
   const SIO::Mesh_read_info info = SIO::read_mesh(mesh_file, input);
@@ -221,6 +223,7 @@ int main(int argc, char** argv)
   {
     Lemon lemon(algorithms[k]);
     lemon.set_multilevel_parameters(2000, std::size_t(ml_cluster), ml_radius, 8);
+    lemon.set_max_flow_budget(mf_budget);
     lemon.set_fallback(false);
     lemon.set_verbose(verbose);
     double best = 1e300;
@@ -235,10 +238,10 @@ int main(int argc, char** argv)
     const Lemon::Statistics& st = lemon.statistics();
     if(k == 0) best_objective = P.objective(sigma);
     std::printf("residual %-36s ok %d  best of %d %8.3f s (build %.3f, flow %.3f, recover %.3f)  objective %.13f  violation %.1e  "
-                "nodes %zu  network arcs %zu  nonzero costs %zu  scale 2^%d/2^%d  certified %d  levels %zu  refinements %zu  largest band %zu\n",
+                "nodes %zu  network arcs %zu  nonzero costs %zu  scale 2^%d/2^%d  certified %d  levels %zu  refinements %zu  largest band %zu  max flows %zu (%zu finished by BK)\n",
                 names[k], int(ok), repeat, best, st.time_build, st.time_solve, st.time_recover, P.objective(sigma),
                 P.max_violation(sigma), st.nodes, st.network_arcs, st.nonzero_cost_arcs, st.cost_exponent,
-                st.capacity_exponent, int(st.certified), st.levels, st.refinements, st.largest_band);
+                st.capacity_exponent, int(st.certified), st.levels, st.refinements, st.largest_band, st.certificates, st.max_flow_fallbacks);
   }
   if(run_glpk)
   {

@@ -7,6 +7,10 @@
 #include <CGAL/Surface_winding_numbers/GLPK_linear_program_traits.h>
 #include <CGAL/Surface_winding_numbers/LEMON_residual_solver.h>
 #include <CGAL/Surface_winding_numbers/internal/pipeline.h>
+#include <CGAL/Surface_winding_numbers/internal/warm_push_relabel.h>
+
+#include <boost/graph/adjacency_list.hpp>
+#include <boost/graph/boykov_kolmogorov_max_flow.hpp>
 
 #include <gtest/gtest.h>
 
@@ -361,6 +365,129 @@ TEST(LemonResidual, MultilevelHierarchyMatchesGLPK)
   EXPECT_GE(deep, 12u);   // the hierarchy certified most answers without network simplex on the whole
   EXPECT_GT(refined, 0u);   // and some only after a refinement around a barrier
   std::printf("multilevel: %zu of 16 certified through the hierarchy, %zu after refinements\n", deep, refined);
+}
+
+// The certificate's maximum flow, whichever algorithm finishes it (push-relabel alone, Boost's
+// Boykov-Kolmogorov alone, or push-relabel stopped early by a tiny work budget and completed by
+// Boykov-Kolmogorov), certifies the same optimum as GLPK.
+TEST(LemonResidual, MultilevelMaxFlowAlgorithmsAgree)
+{
+  std::size_t handed_over = 0;
+  for(unsigned seed = 1; seed <= 8; ++seed)
+  {
+    const bool closed = seed % 4 != 0;
+    const Random_problem rp = random_problem(500 + seed, closed, closed ? 10. : 100., seed % 3 == 0);
+    for(double budget : {-1., 0., 0.5, 200.})
+    {
+      Lemon lemon;
+      make_deep(lemon);
+      lemon.set_max_flow_budget(budget);
+      expect_solver_matches_glpk(lemon, rp.P, "max-flow budget " + std::to_string(budget) + ", seed " + std::to_string(seed));
+      const Lemon::Statistics& st = lemon.statistics();
+      EXPECT_GT(st.certificates, 0u);
+      if(budget <= 0) EXPECT_EQ(st.max_flow_fallbacks, 0u);
+      if(budget == 0.5) handed_over += st.max_flow_fallbacks;
+    }
+  }
+  EXPECT_GT(handed_over, 0u);   // the tiny budget did hand flows over to Boykov-Kolmogorov
+}
+
+// internal::Warm_push_relabel on random networks with scattered excesses and deficits: the flow it
+// moves is a maximum flow (the value of Boost's Boykov-Kolmogorov from scratch), stays within the
+// capacities and conserves every imbalance it does not absorb; on a cut, no residual arc leaves
+// the source side and every excess left is on it.
+TEST(LemonResidual, WarmPushRelabelIsAMaximumFlow)
+{
+  typedef long long Int;
+  typedef SI::Warm_push_relabel<Int> PR;
+  typedef boost::adjacency_list_traits<boost::vecS, boost::vecS, boost::directedS> Traits;
+  typedef boost::adjacency_list<boost::vecS, boost::vecS, boost::directedS,
+    boost::property<boost::vertex_color_t, boost::default_color_type,
+    boost::property<boost::vertex_predecessor_t, Traits::edge_descriptor,
+    boost::property<boost::vertex_distance_t, long>>>,
+    boost::property<boost::edge_capacity_t, Int,
+    boost::property<boost::edge_residual_capacity_t, Int,
+    boost::property<boost::edge_reverse_t, Traits::edge_descriptor>>>> Graph;
+  std::size_t balanced = 0, cut = 0;
+  for(unsigned seed = 1; seed <= 200; ++seed)
+  {
+    std::mt19937 gen(seed);
+    const std::size_t n = 5 + gen() % 60, m = n + gen() % (3 * n);
+    std::vector<std::size_t> tail(m), head(m);
+    std::vector<Int> cap(m), back(m), b(n, 0);
+    for(std::size_t i = 0; i < m; ++i)
+    {
+      tail[i] = gen() % n;
+      head[i] = (tail[i] + 1 + gen() % (n - 1)) % n;
+      cap[i] = Int(gen() % 12);
+      back[i] = gen() % 3 == 0 ? 0 : Int(gen() % 12);
+    }
+    for(std::size_t k = 0; k < n; ++k)   // imbalances that sum to zero
+    {
+      const Int d = Int(gen() % 9);
+      b[gen() % n] += d;
+      b[gen() % n] -= d;
+    }
+    PR pr(n);
+    for(std::size_t i = 0; i < m; ++i) pr.add_arc(tail[i], head[i], cap[i], back[i]);
+    for(std::size_t v = 0; v < n; ++v) pr.set_terminal(v, b[v]);
+    const PR::Outcome outcome = pr.run();
+    ASSERT_NE(outcome, PR::OVER_BUDGET);
+    // what is left at each node, and the value moved
+    std::vector<Int> left = b;
+    for(std::size_t i = 0; i < m; ++i)
+    {
+      const Int f = pr.flow(i);
+      EXPECT_LE(f, cap[i]) << "seed " << seed;
+      EXPECT_GE(f, -back[i]) << "seed " << seed;
+      left[tail[i]] -= f;
+      left[head[i]] += f;
+    }
+    // a node never sends more than it holds, so no node goes below its own deficit; the value is
+    // what the deficits absorbed (excess left anywhere stays in the source side of the cut)
+    Int total = 0, value = 0;
+    for(std::size_t v = 0; v < n; ++v)
+    {
+      EXPECT_GE(left[v], std::min(b[v], Int(0))) << "seed " << seed;
+      if(b[v] > 0) total += b[v];
+      if(b[v] < 0) value += std::min(left[v], Int(0)) - b[v];
+    }
+    Graph g(n + 2);
+    auto add = [&](std::size_t u, std::size_t v, Int c, Int c_back) {
+      const auto e = boost::add_edge(u, v, g).first, r = boost::add_edge(v, u, g).first;
+      put(boost::edge_capacity, g, e, c); put(boost::edge_capacity, g, r, c_back);
+      put(boost::edge_reverse, g, e, r); put(boost::edge_reverse, g, r, e);
+    };
+    for(std::size_t i = 0; i < m; ++i) add(tail[i], head[i], cap[i], back[i]);
+    for(std::size_t v = 0; v < n; ++v)
+    {
+      if(b[v] > 0) add(n, v, b[v], 0);
+      if(b[v] < 0) add(v, n + 1, -b[v], 0);
+    }
+    EXPECT_EQ(value, boost::boykov_kolmogorov_max_flow(g, n, n + 1)) << "seed " << seed;
+    if(outcome == PR::BALANCED)
+    {
+      ++balanced;
+      EXPECT_EQ(value, total) << "seed " << seed;
+      for(std::size_t v = 0; v < n; ++v) EXPECT_EQ(left[v], 0) << "seed " << seed;
+      continue;
+    }
+    ++cut;
+    EXPECT_LT(value, total) << "seed " << seed;
+    for(std::size_t v = 0; v < n; ++v)
+    {
+      if(left[v] > 0) EXPECT_TRUE(pr.source_side(v)) << "seed " << seed;
+      if(left[v] < 0) EXPECT_FALSE(pr.source_side(v)) << "seed " << seed;
+    }
+    for(std::size_t i = 0; i < m; ++i)
+    {
+      const Int f = pr.flow(i);
+      if(pr.source_side(tail[i]) && !pr.source_side(head[i])) EXPECT_EQ(f, cap[i]) << "seed " << seed;
+      if(pr.source_side(head[i]) && !pr.source_side(tail[i])) EXPECT_EQ(f, -back[i]) << "seed " << seed;
+    }
+  }
+  EXPECT_GT(balanced, 10u);
+  EXPECT_GT(cut, 10u);
 }
 
 // Without refinements, an answer the certificate refuses goes to network simplex on the whole:

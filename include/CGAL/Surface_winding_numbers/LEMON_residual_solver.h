@@ -5,6 +5,7 @@
 #define CGAL_SURFACE_WINDING_NUMBERS_LEMON_RESIDUAL_SOLVER_H
 
 #include <CGAL/Surface_winding_numbers/Residual_problem.h>
+#include <CGAL/Surface_winding_numbers/internal/warm_push_relabel.h>
 
 
 #include <boost/graph/adjacency_list.hpp>
@@ -121,6 +122,8 @@ public:
     std::size_t levels = 0;              ///< `MULTILEVEL`: levels of the hierarchy (1: the problem itself)
     std::size_t refinements = 0;         ///< `MULTILEVEL`: band problems solved on the finest level
     std::size_t largest_band = 0;        ///< `MULTILEVEL`: nodes of the largest problem given to network simplex
+    std::size_t certificates = 0;        ///< `MULTILEVEL`: maximum flows run (every level, every refinement)
+    std::size_t max_flow_fallbacks = 0;  ///< `MULTILEVEL`: maximum flows that push-relabel left to Boykov-Kolmogorov
     double objective = 0;                ///< Eq. 11 objective of `sigma`, recomputed with the original data
     double max_violation = 0;            ///< largest violation of the bounds by `sigma`
     double time_build = 0;               ///< seconds: checks, contraction, gauge, scaling, network
@@ -137,8 +140,10 @@ public:
   parallel arcs merge), solves the coarsest one (at most 2000 nodes) with `NETWORK_SIMPLEX`, and on
   each finer level re-solves only a band of nodes around the jumps of the coarser answer (every
   connected piece of the rest contracted to one node). The optimal flows of these network simplex
-  runs are carried down the hierarchy, and on the finest level a maximum flow (Boykov-Kolmogorov,
-  Boost.Graph) completes them into a circulation within the subdifferentials of the objective:
+  runs are carried down the hierarchy, and on the finest level a maximum flow completes them into
+  a circulation within the subdifferentials of the objective (push-relabel on the flat arrays of
+  `internal::Warm_push_relabel`, handed over to Boost.Graph's Boykov-Kolmogorov beyond a work
+  budget, see `set_max_flow_budget()`):
   that circulation is an exact certificate that the answer is optimal for the whole problem, and it
   is checked independently (bounds and conservation, in integers). When no such circulation
   exists, the minimum cut is a set of faces whose shifts can improve the objective; a band around
@@ -190,6 +195,14 @@ public:
     band_radius_ = (std::max)(0, band_radius);
     max_refinements_ = max_refinements;
   }
+  /*!
+  work budget of the push-relabel maximum flow in the certificate of `MULTILEVEL`, in arc scans per
+  node and arc of the level (default 200). Push-relabel is the faster algorithm while the imbalances
+  to repair are local; beyond the budget, Boykov-Kolmogorov finishes the flow from where push-relabel
+  stopped (`statistics().max_flow_fallbacks`). 0: Boykov-Kolmogorov only; a negative value: no
+  budget. Changes the running time, never the answer.
+  */
+  void set_max_flow_budget(double work_per_element) { push_relabel_budget_ = work_per_element; }
 
   /// why the last solve failed (empty after a success)
   const std::string& error() const { return error_; }
@@ -796,7 +809,6 @@ private:
   }
   static Int tension(const Int_arc& e, const std::vector<Int>& pi) { return e.sh + pi[e.L] - pi[e.R]; }
 
-  // network simplex on a whole (small) problem, with the exact duality certificate
   // network simplex on a whole (small) problem, with the exact duality certificate; x gets the
   // optimal flow of each problem arc (from L to R in the sense of the subdifferential: f'-(J) <= x
   // <= f'+(J), a circulation)
@@ -896,17 +908,79 @@ private:
     return true;
   }
 
+  // a maximum-flow problem from the flow x0 within [lower, upper]: residual capacities both ways,
+  // and the imbalance of x0 at every node as its terminal capacity
+  template <class Max_flow>
+  static void load_max_flow(Max_flow& mf, const Level& lv, const std::vector<Int>& lower,
+                            const std::vector<Int>& upper, const std::vector<Int>& x0)
+  {
+    std::vector<Wide> supply(lv.n, Wide(0));
+    for(std::size_t i = 0; i < lv.arcs.size(); ++i)
+    {
+      mf.add_arc(lv.arcs[i].L, lv.arcs[i].R, upper[i] - x0[i], x0[i] - lower[i]);   // x = x0 + flow L->R
+      supply[lv.arcs[i].L] -= Wide(x0[i]);   // x0 leaves L and enters R
+      supply[lv.arcs[i].R] += Wide(x0[i]);
+    }
+    for(std::size_t v = 0; v < lv.n; ++v) mf.set_terminal(v, Int(supply[v]));
+  }
+
+  // Boykov-Kolmogorov (Boost.Graph) from the flow x0, which it completes; true if balanced,
+  // otherwise the source side of a minimum cut is marked in `barrier`
+  static bool boykov_kolmogorov(const Level& lv, const std::vector<Int>& lower, const std::vector<Int>& upper,
+                                std::vector<Int>& x0, std::vector<char>& barrier)
+  {
+    struct Boost_flow
+    {
+      typedef boost::adjacency_list_traits<boost::vecS, boost::vecS, boost::directedS> Traits;
+      typedef boost::adjacency_list<boost::vecS, boost::vecS, boost::directedS,
+        boost::property<boost::vertex_color_t, boost::default_color_type,
+        boost::property<boost::vertex_predecessor_t, Traits::edge_descriptor,
+        boost::property<boost::vertex_distance_t, long>>>,
+        boost::property<boost::edge_capacity_t, Int,
+        boost::property<boost::edge_residual_capacity_t, Int,
+        boost::property<boost::edge_reverse_t, Traits::edge_descriptor>>>> Graph;
+      typedef boost::graph_traits<Graph>::edge_descriptor Edge;
+      std::size_t n;
+      Graph g;
+      std::vector<Edge> rise;
+      Wide total = 0;
+      explicit Boost_flow(std::size_t nodes) : n(nodes), g(nodes + 2) {}
+      Edge add(std::size_t u, std::size_t v, Int c, Int c_back)
+      {
+        const Edge e = boost::add_edge(u, v, g).first, r = boost::add_edge(v, u, g).first;
+        put(boost::edge_capacity, g, e, c); put(boost::edge_capacity, g, r, c_back);
+        put(boost::edge_reverse, g, e, r); put(boost::edge_reverse, g, r, e);
+        return e;
+      }
+      void add_arc(std::size_t u, std::size_t v, Int c, Int c_back) { rise.push_back(add(u, v, c, c_back)); }
+      void set_terminal(std::size_t v, Int t)
+      {
+        if(t > 0) { add(n, v, t, 0); total += t; }
+        else if(t < 0) add(v, n + 1, -t, 0);
+      }
+    } bf(lv.n);
+    load_max_flow(bf, lv, lower, upper, x0);
+    const Int value = boost::boykov_kolmogorov_max_flow(bf.g, lv.n, lv.n + 1);
+    for(std::size_t i = 0; i < x0.size(); ++i)
+      x0[i] += get(boost::edge_capacity, bf.g, bf.rise[i]) - get(boost::edge_residual_capacity, bf.g, bf.rise[i]);
+    if(Wide(value) == bf.total) return true;
+    // nodes reachable from the source in the residual graph: the source side of a minimum cut
+    for(std::size_t v = 0; v < lv.n; ++v)
+      barrier[v] = get(boost::vertex_color, bf.g, v) == boost::black_color ? 1 : 0;
+    return false;
+  }
+
   // optimality of pi on a level: true if a circulation x with f'-(J) <= x <= f'+(J) exists on every
   // arc; otherwise false, with the nodes of a barrier (a set whose shifts can all rise with a
-  // negative slope of the cost) marked in `barrier`. As a maximum flow (Boykov-Kolmogorov, from
-  // Boost.Graph) started from the level's flow lv.x clamped to the bounds: the flows carried down
-  // the hierarchy are nearly balanced, so only short paths remain to be found. The source side of a
-  // minimum cut is a barrier. lv.x gets the flow found (balanced on success).
-  static bool repair_flow(Level& lv, Int U, const std::vector<Int>& pi, std::vector<char>& barrier)
+  // negative slope of the cost) marked in `barrier`. As a maximum flow started from the level's flow
+  // lv.x clamped to the bounds (the flows carried down the hierarchy are nearly balanced): first
+  // push-relabel (internal::Warm_push_relabel), fast while the imbalances are local, within a work
+  // budget; if that is not enough, Boykov-Kolmogorov (Boost.Graph) from where push-relabel stopped.
+  // The source side of a minimum cut is a barrier. lv.x gets the flow found (balanced on success).
+  bool repair_flow(Level& lv, Int U, const std::vector<Int>& pi, std::vector<char>& barrier)
   {
     const std::size_t n = lv.n, na = lv.arcs.size();
     std::vector<Int> lower(na), upper(na), x0(na);
-    std::vector<Wide> supply(n, Wide(0));
     for(std::size_t i = 0; i < na; ++i)
     {
       const Int_arc& e = lv.arcs[i];
@@ -915,49 +989,31 @@ private:
       upper[i] = right_slope(e, J, U);
       const Int start = i < lv.x.size() ? lv.x[i] : 0;
       x0[i] = (std::min)(upper[i], (std::max)(lower[i], start));
-      supply[e.L] -= Wide(x0[i]);   // x0 leaves L and enters R
-      supply[e.R] += Wide(x0[i]);
     }
-    typedef boost::adjacency_list_traits<boost::vecS, boost::vecS, boost::directedS> Traits;
-    typedef boost::adjacency_list<boost::vecS, boost::vecS, boost::directedS,
-      boost::property<boost::vertex_color_t, boost::default_color_type,
-      boost::property<boost::vertex_predecessor_t, Traits::edge_descriptor,
-      boost::property<boost::vertex_distance_t, long>>>,
-      boost::property<boost::edge_capacity_t, Int,
-      boost::property<boost::edge_residual_capacity_t, Int,
-      boost::property<boost::edge_reverse_t, Traits::edge_descriptor>>>> Flow_graph;
-    typedef boost::graph_traits<Flow_graph>::edge_descriptor Edge;
-    Flow_graph fg(n + 2);
-    auto capacity = get(boost::edge_capacity, fg);
-    auto reverse = get(boost::edge_reverse, fg);
-    auto residual = get(boost::edge_residual_capacity, fg);
-    auto add = [&](std::size_t u, std::size_t v, Int c, Int c_back) {
-      const Edge e = boost::add_edge(u, v, fg).first, r = boost::add_edge(v, u, fg).first;
-      capacity[e] = c; capacity[r] = c_back;
-      reverse[e] = r; reverse[r] = e;
-      return e;
-    };
-    std::vector<Edge> rise(na);
-    for(std::size_t i = 0; i < na; ++i)
-      rise[i] = add(lv.arcs[i].L, lv.arcs[i].R, upper[i] - x0[i], x0[i] - lower[i]);   // x = x0 + flow L->R
-    Wide total = 0;
-    for(std::size_t v = 0; v < n; ++v)
-    {
-      if(supply[v] > 0) { add(n, v, Int(supply[v]), 0); total += supply[v]; }
-      else if(supply[v] < 0) add(v, n + 1, Int(-supply[v]), 0);
-    }
-    const Int value = boost::boykov_kolmogorov_max_flow(fg, n, n + 1);
-    // the flow found: within the bounds, balanced if the maximum flow meets every supply
-    lv.x.resize(na);
-    for(std::size_t i = 0; i < na; ++i) lv.x[i] = x0[i] + (capacity[rise[i]] - residual[rise[i]]);
     barrier.assign(n, 0);
-    if(Wide(value) != total)
+    bool balanced = false;
+    ++stats_.certificates;
+    typedef internal::Warm_push_relabel<Int> Push_relabel;
+    typename Push_relabel::Outcome outcome = Push_relabel::OVER_BUDGET;
+    if(push_relabel_budget_ != 0)
     {
-      // nodes reachable from the source in the residual graph: the source side of a minimum cut
-      auto color = get(boost::vertex_color, fg);
-      for(std::size_t v = 0; v < n; ++v) barrier[v] = color[v] == boost::black_color ? 1 : 0;
-      return false;
+      Push_relabel pr(n);
+      load_max_flow(pr, lv, lower, upper, x0);
+      const double budget = push_relabel_budget_ * double(n + 2 * na);
+      outcome = pr.run(push_relabel_budget_ < 0 || budget >= 1e18 ? (std::numeric_limits<std::size_t>::max)()
+                                                                  : std::size_t(budget));
+      for(std::size_t i = 0; i < na; ++i) x0[i] += pr.flow(i);
+      balanced = outcome == Push_relabel::BALANCED;
+      if(outcome == Push_relabel::CUT)
+        for(std::size_t v = 0; v < n; ++v) barrier[v] = pr.source_side(v) ? 1 : 0;
     }
+    if(outcome == Push_relabel::OVER_BUDGET)
+    {
+      if(push_relabel_budget_ != 0) ++stats_.max_flow_fallbacks;
+      balanced = boykov_kolmogorov(lv, lower, upper, x0, barrier);
+    }
+    lv.x = x0;
+    if(!balanced) return false;
     // check the certificate independently: bounds and conservation of x
     std::vector<Wide> balance(n, Wide(0));
     for(std::size_t i = 0; i < na; ++i)
@@ -1164,6 +1220,7 @@ private:
   Algorithm algorithm_;
   std::size_t coarsest_nodes_ = 2000, cluster_size_ = 8, max_refinements_ = 8;
   int band_radius_ = 2;
+  double push_relabel_budget_ = 200;
   bool fallback_ = false;
   bool verbose_ = false;
   double tolerance_ = 1e-9;
