@@ -3,6 +3,8 @@
 
   analyze.py DIR [--label NAME]
   analyze.py --compare LABEL=DIR...      one line per result directory (ablations)
+  analyze.py --speed BEFORE AFTER        whole solve / first jump-Laplace solve on the cases with handles
+                                         of two runs of the same cases (issue 5's "<= 3x" target)
 
 Prints: headline numbers, errors by gap level, a classification of the cases with handles whose error
 is >= 0.5 %, the effect of planted loops sharing edges with region boundaries, per-mesh numbers and
@@ -46,12 +48,39 @@ def compare(items):
             pct(sum(1 for r in gh if r["loops_recovered"] == "1") / len(gh)), statistics.fmean(e(gh, "naive_error_percent"))))
 
 
+def speed(before_dir, after_dir):
+    def load(d):
+        return {r["case"]: r for r in csv.DictReader(open(os.path.join(d, "cases.csv"))) if r["ok"] == "1"}
+    A, B = load(before_dir), load(after_dir)
+    keys = [k for k in A if k in B and A[k]["simply_connected"] == "0"]
+    ratio = lambda r: float(r["time_total"]) / float(r["time_jump_laplace"])
+    same = sum(1 for k in keys if A[k]["error_percent"] == B[k]["error_percent"] and A[k]["G_edges"] == B[k]["G_edges"])
+    print("cases with handles in both runs: %d; same error and G: %d" % (len(keys), same))
+    print("| faces | cases | whole / first solve <= 3x: before, after | median ratio: before, after | residual total (s): before, after |")
+    print("|---|---|---|---|---|")
+    for lo, hi in ((0, 40000), (40000, 100000), (100000, 10 ** 9), (0, 10 ** 9)):
+        ks = [k for k in keys if lo <= int(A[k]["faces"]) < hi]
+        if not ks:
+            continue
+        row = []
+        for D in (A, B):
+            r = [ratio(D[k]) for k in ks]
+            row.append((sum(1 for x in r if x <= 3), statistics.median(r), sum(float(D[k]["time_residual"]) for k in ks)))
+        label = "all" if (lo, hi) == (0, 10 ** 9) else ("%dk-%s" % (lo // 1000, "" if hi == 10 ** 9 else "%dk" % (hi // 1000)))
+        print("| %s | %d | %d, %d | %.2f, %.2f | %.1f, %.1f |" % (label, len(ks), row[0][0], row[1][0], row[0][1], row[1][1],
+                                                               row[0][2], row[1][2]))
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("dir", nargs="?")
     ap.add_argument("--label", default="")
     ap.add_argument("--compare", nargs="+")
+    ap.add_argument("--speed", nargs=2, metavar=("BEFORE", "AFTER"))
     a = ap.parse_args()
+    if a.speed:
+        speed(*a.speed)
+        return
     if a.compare:
         compare(a.compare)
         return
