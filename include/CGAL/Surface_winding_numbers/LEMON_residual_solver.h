@@ -197,7 +197,7 @@ public:
   }
   /*!
   work budget of the push-relabel maximum flow in the certificate of `MULTILEVEL`, in arc scans per
-  node and arc of the level (default 200). Push-relabel is the faster algorithm while the imbalances
+  node and arc of the level (default 60). Push-relabel is the faster algorithm while the imbalances
   to repair are local; beyond the budget, Boykov-Kolmogorov finishes the flow from where push-relabel
   stopped (`statistics().max_flow_fallbacks`). 0: Boykov-Kolmogorov only; a negative value: no
   budget. Changes the running time, never the answer.
@@ -1220,7 +1220,7 @@ private:
   Algorithm algorithm_;
   std::size_t coarsest_nodes_ = 2000, cluster_size_ = 8, max_refinements_ = 8;
   int band_radius_ = 2;
-  double push_relabel_budget_ = 200;
+  double push_relabel_budget_ = 60;
   bool fallback_ = false;
   bool verbose_ = false;
   double tolerance_ = 1e-9;
