@@ -197,10 +197,12 @@ public:
   }
   /*!
   work budget of the push-relabel maximum flow in the certificate of `MULTILEVEL`, in arc scans per
-  node and arc of the level (default 60). Push-relabel is the faster algorithm while the imbalances
-  to repair are local; beyond the budget, Boykov-Kolmogorov finishes the flow from where push-relabel
-  stopped (`statistics().max_flow_fallbacks`). 0: Boykov-Kolmogorov only; a negative value: no
-  budget. Changes the running time, never the answer.
+  node and arc of the level (default 200), capped at \f$ 2 \cdot 10^8 \f$ scans in all but never
+  below 60 per node and arc (on levels of more than a million nodes and arcs, the certificates that
+  push-relabel finds hard cost it more than they cost Boykov-Kolmogorov). Push-relabel is the faster
+  algorithm on most certificates; beyond the budget, Boykov-Kolmogorov finishes the flow from where
+  push-relabel stopped (`statistics().max_flow_fallbacks`). 0: Boykov-Kolmogorov only; a negative
+  value: no budget. Changes the running time, never the answer.
   */
   void set_max_flow_budget(double work_per_element) { push_relabel_budget_ = work_per_element; }
 
@@ -999,7 +1001,11 @@ private:
     {
       Push_relabel pr(n);
       load_max_flow(pr, lv, lower, upper, x0);
-      const double budget = push_relabel_budget_ * double(n + 2 * na);
+      // the budget per element, capped at 2e8 arc scans in all on large levels (but never below 60 per
+      // element): there push-relabel's hard certificates cost more than Boykov-Kolmogorov's
+      const double elements = double(n + 2 * na);
+      const double budget = (std::max)((std::min)(push_relabel_budget_ * elements, 2e8),
+                                       (std::min)(push_relabel_budget_, 60.) * elements);
       outcome = pr.run(push_relabel_budget_ < 0 || budget >= 1e18 ? (std::numeric_limits<std::size_t>::max)()
                                                                   : std::size_t(budget));
       for(std::size_t i = 0; i < na; ++i) x0[i] += pr.flow(i);
@@ -1220,7 +1226,7 @@ private:
   Algorithm algorithm_;
   std::size_t coarsest_nodes_ = 2000, cluster_size_ = 8, max_refinements_ = 8;
   int band_radius_ = 2;
-  double push_relabel_budget_ = 60;
+  double push_relabel_budget_ = 200;
   bool fallback_ = false;
   bool verbose_ = false;
   double tolerance_ = 1e-9;
