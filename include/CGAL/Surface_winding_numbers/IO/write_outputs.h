@@ -216,6 +216,8 @@ inline void write_text_file(const std::string& path, const std::string& text)
 
 /*!
   \brief writes one integer label per line, in face-index order.
+  \param os the stream written to
+  \param mesh the mesh whose faces are labelled
   \param labels the labels per face: a `std::vector<int>` indexed by face index, a readable property map
   (face descriptor -> integer) or a callable `int(face_descriptor)`
 */
@@ -257,9 +259,11 @@ inline std::array<unsigned char, 3> label_color(int label)
   `uchar red, green, blue` (from `label_color()`), readable by MeshLab.
 
   Vertex coordinates are written as `double`. NaN winding numbers are written as NaN.
-  \param labels per-face labels: a `std::vector<int>` (may be empty: no label and colour properties), a
+  \param os the stream written to (open it in binary mode for the binary format)
+  \param mesh the mesh written
+  \param label_map per-face labels: a `std::vector<int>` (may be empty: no label and colour properties), a
   readable property map (face descriptor -> integer) or a callable
-  \param winding either a `std::vector<double>` of per-face values (may be empty: no `winding_number`
+  \param winding_map either a `std::vector<double>` of per-face values (may be empty: no `winding_number`
   property), or per-corner values (a readable property map or callable keyed by halfedge, the corner
   `(target(h), face(h))`), averaged over the defined (non-NaN) corners of each face
   \param binary `binary_little_endian` if true (the default: compact, exact NaN), ASCII otherwise; open the
@@ -358,6 +362,8 @@ void write_labeled_ply(const std::string& path, const CGAL::Surface_mesh<Point>&
   undefined), and `f i/t/ j/t/ k/t/` lines (1-based vertex and corner indices). Corners are numbered in face
   order and, within a face, in the order of `vertices_around_face(halfedge(f))`.
 
+  \param os the stream written to
+  \param mesh the mesh written
   \param corner_value w at the corner `(target(h), face(h))` of halfedge `h`: a `std::vector<double>` indexed by
   halfedge index, a readable property map (halfedge descriptor -> double) or a callable `double(halfedge)`
 */
@@ -509,6 +515,9 @@ std::vector<std::vector<std::size_t> > chain_to_polylines(const CGAL::Surface_me
   `chain_to_polylines()` (1-based; multiplicity kept: an edge with value 2 is traversed twice).
 
   Coordinates are written in the shortest form that reads back exactly.
+  \param os the stream written to
+  \param mesh the mesh the chain lives on
+  \param chain the integer value per edge (see `chain_to_polylines()` for the accepted kinds of maps)
   \param all_vertices if true every mesh vertex is written, so that `l` indices are the mesh's 1-based vertex
   indices; if false (default) only the vertices used by the chain are written, in increasing mesh index order,
   and a comment line `# mesh vertices: i1 i2 ...` gives their 0-based mesh indices.
@@ -733,25 +742,39 @@ private:
 class Json
 {
 public:
+  /// the elements of an array
   typedef std::vector<Json> Array;
+  /// the members of an object, in insertion order
   typedef std::vector<std::pair<std::string, Json> > Object;
 
-  // copies carry the value only, not the state of the streaming interface
+  /// copies the value only, not the state of the streaming interface
   Json(const Json& o) : v_(o.v_) {}
+  /// moves the value only, not the state of the streaming interface
   Json(Json&& o) noexcept : v_(std::move(o.v_)) {}
+  /// assigns the value only, not the state of the streaming interface
   Json& operator=(const Json& o) { if(this != &o) v_ = o.v_; return *this; }
+  /// move-assigns the value only, not the state of the streaming interface
   Json& operator=(Json&& o) noexcept { v_ = std::move(o.v_); return *this; }
 
   /// \brief null
   Json() : v_(std::monostate()) {}
+  /// null
   Json(std::nullptr_t) : v_(std::monostate()) {}
+  /// `true` or `false`
   Json(bool b) : v_(b) {}
+  /// a number (`null` if not finite)
   Json(double d) : v_(d) {}
+  /// a number (`null` if not finite)
   Json(float d) : v_(static_cast<double>(d)) {}
+  /// a string
   Json(const char* s) : v_(std::string(s)) {}
+  /// a string
   Json(const std::string& s) : v_(s) {}
+  /// a string
   Json(std::string&& s) : v_(std::move(s)) {}
+  /// an array
   Json(const Array& a) : v_(a) {}
+  /// an object
   Json(const Object& o) : v_(o) {}
   /// integers (any integral type except bool)
   template <class T, typename std::enable_if<std::is_integral<T>::value && !std::is_same<T, bool>::value, int>::type = 0>
@@ -772,7 +795,9 @@ public:
   /// \brief an empty array
   static Json array() { Json j; j.v_ = Array(); return j; }
 
+  /// true if the value is an object
   bool is_object() const { return std::holds_alternative<Object>(v_); }
+  /// true if the value is an array
   bool is_array() const { return std::holds_alternative<Array>(v_); }
 
   /// \brief the member `key` of an object (created as null if missing; a null value becomes an object).
