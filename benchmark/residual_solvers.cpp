@@ -115,7 +115,7 @@ int main(int argc, char** argv)
 {
   std::string mesh_file, curve_file;
   bool run_glpk = true, run_whole = true, run_augment = true, run_scaling = true, run_simplex = true, run_cut = true, run_table = false, verbose = false;
-  int ml_radius = 2, ml_cluster = 8;
+  int ml_radius = 6, ml_cluster = 8;
   double mf_budget = 200;
   int repeat = 3, subdivisions = 0;
   for(int i = 1; i < argc; ++i)

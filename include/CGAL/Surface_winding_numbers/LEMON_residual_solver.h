@@ -183,7 +183,7 @@ public:
   void set_verbose(bool b) { verbose_ = b; }
   /*!
   parameters of `MULTILEVEL`: the hierarchy stops at `coarsest_nodes` nodes (default 2000), clusters
-  have at most `cluster_size` nodes (default 8), bands reach `band_radius` arcs (default 2) beyond
+  have at most `cluster_size` nodes (default 8), bands reach `band_radius` arcs (default 6; twice that on the finest level) beyond
   the jumps, and at most `max_refinements` bands (default 8) are re-solved on the finest level before
   the whole problem is handed to `NETWORK_SIMPLEX`. They change the running time, never the optimum.
   */
@@ -1225,7 +1225,7 @@ private:
 
   Algorithm algorithm_;
   std::size_t coarsest_nodes_ = 2000, cluster_size_ = 8, max_refinements_ = 8;
-  int band_radius_ = 2;
+  int band_radius_ = 6;
   double push_relabel_budget_ = 200;
   bool fallback_ = false;
   bool verbose_ = false;
