@@ -7,10 +7,8 @@
 #include <CGAL/Surface_winding_numbers/GLPK_linear_program_traits.h>
 #include <CGAL/Surface_winding_numbers/LEMON_residual_solver.h>
 #include <CGAL/Surface_winding_numbers/internal/pipeline.h>
+#include <CGAL/Surface_winding_numbers/internal/boykov_kolmogorov_flow.h>
 #include <CGAL/Surface_winding_numbers/internal/warm_push_relabel.h>
-
-#include <boost/graph/adjacency_list.hpp>
-#include <boost/graph/boykov_kolmogorov_max_flow.hpp>
 
 #include <gtest/gtest.h>
 
@@ -393,21 +391,13 @@ TEST(LemonResidual, MultilevelMaxFlowAlgorithmsAgree)
 }
 
 // internal::Warm_push_relabel on random networks with scattered excesses and deficits: the flow it
-// moves is a maximum flow (the value of Boost's Boykov-Kolmogorov from scratch), stays within the
+// moves is a maximum flow (the value of internal::Boykov_kolmogorov_flow, Boost's, from scratch), stays within the
 // capacities and conserves every imbalance it does not absorb; on a cut, no residual arc leaves
 // the source side and every excess left is on it.
 TEST(LemonResidual, WarmPushRelabelIsAMaximumFlow)
 {
   typedef long long Int;
   typedef SI::Warm_push_relabel<Int> PR;
-  typedef boost::adjacency_list_traits<boost::vecS, boost::vecS, boost::directedS> Traits;
-  typedef boost::adjacency_list<boost::vecS, boost::vecS, boost::directedS,
-    boost::property<boost::vertex_color_t, boost::default_color_type,
-    boost::property<boost::vertex_predecessor_t, Traits::edge_descriptor,
-    boost::property<boost::vertex_distance_t, long>>>,
-    boost::property<boost::edge_capacity_t, Int,
-    boost::property<boost::edge_residual_capacity_t, Int,
-    boost::property<boost::edge_reverse_t, Traits::edge_descriptor>>>> Graph;
   std::size_t balanced = 0, cut = 0;
   for(unsigned seed = 1; seed <= 200; ++seed)
   {
@@ -452,19 +442,11 @@ TEST(LemonResidual, WarmPushRelabelIsAMaximumFlow)
       if(b[v] > 0) total += b[v];
       if(b[v] < 0) value += std::min(left[v], Int(0)) - b[v];
     }
-    Graph g(n + 2);
-    auto add = [&](std::size_t u, std::size_t v, Int c, Int c_back) {
-      const auto e = boost::add_edge(u, v, g).first, r = boost::add_edge(v, u, g).first;
-      put(boost::edge_capacity, g, e, c); put(boost::edge_capacity, g, r, c_back);
-      put(boost::edge_reverse, g, e, r); put(boost::edge_reverse, g, r, e);
-    };
-    for(std::size_t i = 0; i < m; ++i) add(tail[i], head[i], cap[i], back[i]);
-    for(std::size_t v = 0; v < n; ++v)
-    {
-      if(b[v] > 0) add(n, v, b[v], 0);
-      if(b[v] < 0) add(v, n + 1, -b[v], 0);
-    }
-    EXPECT_EQ(value, boost::boykov_kolmogorov_max_flow(g, n, n + 1)) << "seed " << seed;
+    SI::Boykov_kolmogorov_flow<Int> bk(n);   // the reference, from scratch
+    for(std::size_t i = 0; i < m; ++i) bk.add_arc(tail[i], head[i], cap[i], back[i]);
+    for(std::size_t v = 0; v < n; ++v) bk.set_terminal(v, b[v]);
+    EXPECT_EQ(bk.run(), outcome == PR::BALANCED) << "seed " << seed;
+    EXPECT_EQ(value, bk.value()) << "seed " << seed;
     if(outcome == PR::BALANCED)
     {
       ++balanced;

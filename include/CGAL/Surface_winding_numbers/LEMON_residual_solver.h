@@ -5,11 +5,9 @@
 #define CGAL_SURFACE_WINDING_NUMBERS_LEMON_RESIDUAL_SOLVER_H
 
 #include <CGAL/Surface_winding_numbers/Residual_problem.h>
+#include <CGAL/Surface_winding_numbers/internal/boykov_kolmogorov_flow.h>
 #include <CGAL/Surface_winding_numbers/internal/warm_push_relabel.h>
 
-
-#include <boost/graph/adjacency_list.hpp>
-#include <boost/graph/boykov_kolmogorov_max_flow.hpp>
 #include <lemon/cost_scaling.h>
 #include <lemon/network_simplex.h>
 #include <lemon/smart_graph.h>
@@ -931,44 +929,12 @@ private:
   static bool boykov_kolmogorov(const Level& lv, const std::vector<Int>& lower, const std::vector<Int>& upper,
                                 std::vector<Int>& x0, std::vector<char>& barrier)
   {
-    struct Boost_flow
-    {
-      typedef boost::adjacency_list_traits<boost::vecS, boost::vecS, boost::directedS> Traits;
-      typedef boost::adjacency_list<boost::vecS, boost::vecS, boost::directedS,
-        boost::property<boost::vertex_color_t, boost::default_color_type,
-        boost::property<boost::vertex_predecessor_t, Traits::edge_descriptor,
-        boost::property<boost::vertex_distance_t, long>>>,
-        boost::property<boost::edge_capacity_t, Int,
-        boost::property<boost::edge_residual_capacity_t, Int,
-        boost::property<boost::edge_reverse_t, Traits::edge_descriptor>>>> Graph;
-      typedef boost::graph_traits<Graph>::edge_descriptor Edge;
-      std::size_t n;
-      Graph g;
-      std::vector<Edge> rise;
-      Wide total = 0;
-      explicit Boost_flow(std::size_t nodes) : n(nodes), g(nodes + 2) {}
-      Edge add(std::size_t u, std::size_t v, Int c, Int c_back)
-      {
-        const Edge e = boost::add_edge(u, v, g).first, r = boost::add_edge(v, u, g).first;
-        put(boost::edge_capacity, g, e, c); put(boost::edge_capacity, g, r, c_back);
-        put(boost::edge_reverse, g, e, r); put(boost::edge_reverse, g, r, e);
-        return e;
-      }
-      void add_arc(std::size_t u, std::size_t v, Int c, Int c_back) { rise.push_back(add(u, v, c, c_back)); }
-      void set_terminal(std::size_t v, Int t)
-      {
-        if(t > 0) { add(n, v, t, 0); total += t; }
-        else if(t < 0) add(v, n + 1, -t, 0);
-      }
-    } bf(lv.n);
-    load_max_flow(bf, lv, lower, upper, x0);
-    const Int value = boost::boykov_kolmogorov_max_flow(bf.g, lv.n, lv.n + 1);
-    for(std::size_t i = 0; i < x0.size(); ++i)
-      x0[i] += get(boost::edge_capacity, bf.g, bf.rise[i]) - get(boost::edge_residual_capacity, bf.g, bf.rise[i]);
-    if(Wide(value) == bf.total) return true;
-    // nodes reachable from the source in the residual graph: the source side of a minimum cut
-    for(std::size_t v = 0; v < lv.n; ++v)
-      barrier[v] = get(boost::vertex_color, bf.g, v) == boost::black_color ? 1 : 0;
+    internal::Boykov_kolmogorov_flow<Int> bk(lv.n);
+    load_max_flow(bk, lv, lower, upper, x0);
+    const bool balanced = bk.run();
+    for(std::size_t i = 0; i < x0.size(); ++i) x0[i] += bk.flow(i);
+    if(balanced) return true;
+    for(std::size_t v = 0; v < lv.n; ++v) barrier[v] = bk.source_side(v) ? 1 : 0;
     return false;
   }
 

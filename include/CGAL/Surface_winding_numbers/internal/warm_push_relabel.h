@@ -164,7 +164,7 @@ private:
     {
       Index k = current_[v];
       const Index end = first_[v + 1];
-      for(; k < end && b_[v] > 0; ++k)
+      for(; k < end; ++k)
       {
         const Index a = out_[k];
         if(r_[a] == 0) continue;
