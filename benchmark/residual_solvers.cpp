@@ -1,6 +1,6 @@
 // Residual solvers (Eq. 11) on a real case: LEMON network flows vs GLPK's simplex.
 //
-//   residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--augment 0|1] [--scaling 0|1] [--simplex 0|1] [--multilevel 0|1] [--table 0|1] [--ml-radius R] [--ml-cluster C] [--mf-budget W] [--verbose]
+//   residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--augment 0|1] [--scaling 0|1] [--simplex 0|1] [--multilevel 0|1] [--table 0|1] [--ml-radius R] [--ml-cluster C] [--ml-refinements N] [--mf-budget W] [--verbose]
 //
 // Reads the mesh and its curves like the swn tool (OBJ `l` lines and/or a curve file), cuts the mesh
 // so that the curves lie on edges, optionally subdivides it N times 1-to-4 at the edge midpoints
@@ -115,7 +115,7 @@ int main(int argc, char** argv)
 {
   std::string mesh_file, curve_file;
   bool run_glpk = true, run_whole = true, run_augment = true, run_scaling = true, run_simplex = true, run_cut = true, run_table = false, verbose = false;
-  int ml_radius = 6, ml_cluster = 8;
+  int ml_radius = 6, ml_cluster = 8, ml_refinements = 16;
   double mf_budget = 200;
   int repeat = 3, subdivisions = 0;
   for(int i = 1; i < argc; ++i)
@@ -132,12 +132,13 @@ int main(int argc, char** argv)
     else if(a == "--multilevel" && i + 1 < argc) run_cut = std::atoi(argv[++i]) != 0;
     else if(a == "--ml-radius" && i + 1 < argc) ml_radius = std::atoi(argv[++i]);
     else if(a == "--ml-cluster" && i + 1 < argc) ml_cluster = std::atoi(argv[++i]);
+    else if(a == "--ml-refinements" && i + 1 < argc) ml_refinements = std::atoi(argv[++i]);
     else if(a == "--mf-budget" && i + 1 < argc) mf_budget = std::atof(argv[++i]);
     else if(a == "--table" && i + 1 < argc) run_table = std::atoi(argv[++i]) != 0;
     else if(a == "--verbose") verbose = true;
     else mesh_file = a;
   }
-  if(mesh_file.empty()) { std::fprintf(stderr, "usage: residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--augment 0|1] [--scaling 0|1] [--simplex 0|1] [--multilevel 0|1] [--table 0|1] [--ml-radius R] [--ml-cluster C] [--mf-budget W] [--verbose]\n"); return 2; }
+  if(mesh_file.empty()) { std::fprintf(stderr, "usage: residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--augment 0|1] [--scaling 0|1] [--simplex 0|1] [--multilevel 0|1] [--table 0|1] [--ml-radius R] [--ml-cluster C] [--ml-refinements N] [--mf-budget W] [--verbose]\n"); return 2; }
 
   Mesh input;
   const SIO::Mesh_read_info info = SIO::read_mesh(mesh_file, input);
@@ -222,7 +223,7 @@ int main(int argc, char** argv)
   for(int k = 0; k < n_algorithms; ++k)
   {
     Lemon lemon(algorithms[k]);
-    lemon.set_multilevel_parameters(2000, std::size_t(ml_cluster), ml_radius, 8);
+    lemon.set_multilevel_parameters(2000, std::size_t(ml_cluster), ml_radius, std::size_t(ml_refinements));
     lemon.set_max_flow_budget(mf_budget);
     lemon.set_fallback(false);
     lemon.set_verbose(verbose);

@@ -145,7 +145,8 @@ public:
   that circulation is an exact certificate that the answer is optimal for the whole problem, and it
   is checked independently (bounds and conservation, in integers). When no such circulation
   exists, the minimum cut is a set of faces whose shifts can improve the objective; a band around
-  its border is re-solved and the certificate tried again. After `max_refinements` failed
+  its border (and only there) is re-solved, which lowers the objective, and the certificate is
+  tried again. After `max_refinements` failed
   certificates (see `set_multilevel_parameters()`), the whole problem goes to `NETWORK_SIMPLEX`
   (`statistics().fallback`): the answer is always an optimum of the whole problem.
 
@@ -182,7 +183,7 @@ public:
   /*!
   parameters of `MULTILEVEL`: the hierarchy stops at `coarsest_nodes` nodes (default 2000), clusters
   have at most `cluster_size` nodes (default 8), bands reach `band_radius` arcs (default 6; twice that on the finest level) beyond
-  the jumps, and at most `max_refinements` bands (default 8) are re-solved on the finest level before
+  the jumps, and at most `max_refinements` bands (default 16) are re-solved on the finest level before
   the whole problem is handed to `NETWORK_SIMPLEX`. They change the running time, never the optimum.
   */
   void set_multilevel_parameters(std::size_t coarsest_nodes, std::size_t cluster_size, int band_radius,
@@ -839,20 +840,23 @@ private:
       if(lv.component[v] == v) pi[v] = 0;
   }
 
-  // re-solves, exactly, the band of nodes within `radius` arcs of a nonzero jump or of a seed,
-  // every connected piece of the rest being contracted to one node: the unknowns are the changes
-  // of pi, so the band problem's jumps are the current tensions
-  bool refine(Level& lv, Int U, std::vector<Int>& pi, const std::vector<char>& seed, int radius, std::string& why)
+  // re-solves, exactly, the band of nodes within `radius` arcs of a seed (and, if `around_jumps`, of
+  // every nonzero jump), every connected piece of the rest being contracted to one node: the unknowns
+  // are the changes of pi, so the band problem's jumps are the current tensions. An arc inside a
+  // piece keeps its jump (both ends shift together).
+  bool refine(Level& lv, Int U, std::vector<Int>& pi, const std::vector<char>& seed, int radius, bool around_jumps,
+              std::string& why)
   {
     const Adjacency adj(lv.n, lv.arcs);
     std::vector<int> dist(lv.n, -1);
     std::vector<std::size_t> queue;
-    for(const Int_arc& e : lv.arcs)
-      if(tension(e, pi) != 0)
-      {
-        if(dist[e.L] < 0) { dist[e.L] = 0; queue.push_back(e.L); }
-        if(dist[e.R] < 0) { dist[e.R] = 0; queue.push_back(e.R); }
-      }
+    if(around_jumps)
+      for(const Int_arc& e : lv.arcs)
+        if(tension(e, pi) != 0)
+        {
+          if(dist[e.L] < 0) { dist[e.L] = 0; queue.push_back(e.L); }
+          if(dist[e.R] < 0) { dist[e.R] = 0; queue.push_back(e.R); }
+        }
     for(std::size_t v = 0; v < seed.size(); ++v)
       if(seed[v] && dist[v] < 0) { dist[v] = 0; queue.push_back(v); }
     for(std::size_t q = 0; q < queue.size(); ++q)
@@ -890,7 +894,7 @@ private:
     for(std::size_t i = 0; i < lv.arcs.size(); ++i)
     {
       const Int_arc& e = lv.arcs[i];
-      if(dist[e.L] < 0 && dist[e.R] < 0) continue;   // inside a contracted piece: jump 0, unchanged
+      if(dist[e.L] < 0 && dist[e.R] < 0) continue;   // inside a contracted piece: jump unchanged
       Int_arc x = e;
       x.L = id[e.L];
       x.R = id[e.R];
@@ -899,7 +903,15 @@ private:
       level_arc.push_back(i);
     }
     std::vector<Int> delta, x;
+    const auto t0 = std::chrono::steady_clock::now();
     if(!solve_whole(n, sub, U, delta, x, why)) return false;
+    if(verbose_)
+    {
+      std::size_t band = 0;
+      for(int d : dist) band += d >= 0 ? 1 : 0;
+      std::cerr << "[swn] multilevel: band of " << band << " nodes (" << n << " with the pieces, " << sub.size()
+                << " arcs) solved in " << seconds(t0) << " s\n";
+    }
     for(std::size_t v = 0; v < lv.n; ++v) pi[v] += delta[id[v]];
     // the band's optimal flow is exact on its arcs; the arcs inside the pieces keep theirs
     lv.x.resize(lv.arcs.size(), 0);
@@ -1035,7 +1047,7 @@ private:
       for(std::size_t v = 0; v < levels[l].n; ++v) fine[v] = pi[levels[l].parent[v]];
       pi.swap(fine);
       prolong_flow(levels[l], levels[l + 1]);
-      if(!refine(levels[l], U, pi, no_seed, l == 0 ? 2 * band_radius_ : band_radius_, why)) return false;
+      if(!refine(levels[l], U, pi, no_seed, l == 0 ? 2 * band_radius_ : band_radius_, true, why)) return false;
       std::vector<Int>().swap(levels[l + 1].x);
       // coarse levels: only the repaired flow, as the start of the next level's flow (refinement
       // rounds there did not pay off); finest level: refinements until the certificate holds
@@ -1069,12 +1081,20 @@ private:
       if(certified) return true;
       if(round >= rounds) return false;
       if(l == 0) ++stats_.refinements;
-      // the band grows around the arcs that cross the barrier: the pieces of the rest stay free to
-      // shift, so the descent along the barrier is within reach of the band problem
+      // a band around the arcs that cross the barrier only: every piece of the rest lies on one side
+      // of the barrier and stays free to shift, so the descent along the barrier is within reach of
+      // the band problem, which therefore lowers the objective. (Bands around every jump as well,
+      // as on the first solve of a level, cost 2-10x more network simplex time for fewer rounds.)
       std::vector<char> seed(lv.n, 0);
       for(const Int_arc& e : lv.arcs)
         if(barrier[e.L] != barrier[e.R]) seed[e.L] = seed[e.R] = 1;
-      if(!refine(lv, U, pi, seed, band_radius_ + int(round), why)) return false;
+      const std::vector<Int> before = pi;
+      if(!refine(lv, U, pi, seed, band_radius_ + int(round), false, why)) return false;
+      if(pi == before)   // cannot happen in exact arithmetic: the barrier is a descent direction
+      {
+        why = "a refinement around the barrier of the certificate did not move the shifts";
+        return false;
+      }
     }
   }
 
@@ -1190,7 +1210,7 @@ private:
   static constexpr int max_cost_exponent = 42;
 
   Algorithm algorithm_;
-  std::size_t coarsest_nodes_ = 2000, cluster_size_ = 8, max_refinements_ = 8;
+  std::size_t coarsest_nodes_ = 2000, cluster_size_ = 8, max_refinements_ = 16;
   int band_radius_ = 6;
   double push_relabel_budget_ = 200;
   bool fallback_ = false;
