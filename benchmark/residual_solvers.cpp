@@ -1,6 +1,6 @@
 // Residual solvers (Eq. 11) on a real case: LEMON network flows vs GLPK's simplex.
 //
-//   residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--augment 0|1] [--scaling 0|1] [--simplex 0|1] [--multilevel 0|1] [--table 0|1] [--ml-radius R] [--ml-cluster C] [--ml-refinements N] [--mf-budget W] [--verbose]
+//   residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--augment 0|1] [--scaling 0|1] [--simplex 0|1] [--multilevel 0|1] [--table 0|1] [--ml-radius R] [--ml-cluster C] [--ml-refinements N] [--mf-budget W] [--single-blas 0|1] [--verbose]
 //
 // Reads the mesh and its curves like the swn tool (OBJ `l` lines and/or a curve file), cuts the mesh
 // so that the curves lie on edges, optionally subdivides it N times 1-to-4 at the edge midpoints
@@ -19,6 +19,7 @@
 #include <CGAL/Surface_winding_numbers/IO/curve_io.h>
 #include <CGAL/Surface_winding_numbers/IO/read_mesh.h>
 #include <CGAL/Surface_winding_numbers/LEMON_residual_solver.h>
+#include <CGAL/Surface_winding_numbers/single_threaded_blas.h>
 
 #include <array>
 #include <chrono>
@@ -116,6 +117,7 @@ int main(int argc, char** argv)
   std::string mesh_file, curve_file;
   bool run_glpk = true, run_whole = true, run_augment = true, run_scaling = true, run_simplex = true, run_cut = true, run_table = false, verbose = false;
   int ml_radius = 6, ml_cluster = 8, ml_refinements = 16;
+  bool single_blas = true;   // one OpenBLAS thread per call, as the swn tool
   double mf_budget = 200;
   int repeat = 3, subdivisions = 0;
   for(int i = 1; i < argc; ++i)
@@ -135,10 +137,12 @@ int main(int argc, char** argv)
     else if(a == "--ml-refinements" && i + 1 < argc) ml_refinements = std::atoi(argv[++i]);
     else if(a == "--mf-budget" && i + 1 < argc) mf_budget = std::atof(argv[++i]);
     else if(a == "--table" && i + 1 < argc) run_table = std::atoi(argv[++i]) != 0;
+    else if(a == "--single-blas" && i + 1 < argc) single_blas = std::atoi(argv[++i]) != 0;
     else if(a == "--verbose") verbose = true;
     else mesh_file = a;
   }
-  if(mesh_file.empty()) { std::fprintf(stderr, "usage: residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--augment 0|1] [--scaling 0|1] [--simplex 0|1] [--multilevel 0|1] [--table 0|1] [--ml-radius R] [--ml-cluster C] [--ml-refinements N] [--mf-budget W] [--verbose]\n"); return 2; }
+  if(mesh_file.empty()) { std::fprintf(stderr, "usage: residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--augment 0|1] [--scaling 0|1] [--simplex 0|1] [--multilevel 0|1] [--table 0|1] [--ml-radius R] [--ml-cluster C] [--ml-refinements N] [--mf-budget W] [--single-blas 0|1] [--verbose]\n"); return 2; }
+  if(single_blas) CGAL::Surface_winding_numbers::use_single_threaded_openblas();
 
   Mesh input;
   const SIO::Mesh_read_info info = SIO::read_mesh(mesh_file, input);

@@ -14,6 +14,7 @@
 #include <CGAL/Surface_winding_numbers/IO/curve_io.h>
 #include <CGAL/Surface_winding_numbers/IO/read_mesh.h>
 #include <CGAL/Surface_winding_numbers/IO/write_outputs.h>
+#include <CGAL/Surface_winding_numbers/single_threaded_blas.h>
 
 #include <chrono>
 #include <cmath>
@@ -149,6 +150,8 @@ double seconds_since(std::chrono::steady_clock::time_point t0)
 
 int main(int argc, char** argv)
 {
+  // one OpenBLAS thread per call, so that the two factorizations run side by side
+  const bool single_threaded_blas = SWN::use_single_threaded_openblas();
   Options opt;
   try
   {
@@ -161,6 +164,7 @@ int main(int argc, char** argv)
   }
   if(opt.help) { std::cout << usage; return 0; }
   auto log = [&](const std::string& s) { if(opt.verbose) std::cerr << "[swn] " << s << "\n"; };
+  if(single_threaded_blas) log("OpenBLAS set to one thread per call (OPENBLAS_NUM_THREADS overrides)");
 
   const auto t_start = std::chrono::steady_clock::now();
   Mesh input;

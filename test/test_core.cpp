@@ -482,3 +482,54 @@ TEST(ReducedResidual, AgreesWithTheExactResidualOnSeparatedCurves)
   EXPECT_EQ(inside, 2 * 5 * 4);
   EXPECT_EQ(nG, nv);
 }
+
+TEST(ConcurrentFactorizations, SameAnswerAsSequential)
+{
+  // broken meridian + broken contractible loop: the Hodge projection is needed, and its 2-form
+  // Laplacian is factorized on a second thread by default; the answer is the analytic one and the
+  // same as with both factorizations on this thread, also when the solver object is reused
+  Mesh m;
+  const int nu = 24, nv = 12;
+  auto vs = torus_mesh(m, nu, nv);
+  auto chain = m.add_property_map<Mesh::Edge_index, int>("e:chain", 0).first;
+  std::vector<Vertex> a, b, loop;
+  for(int j = 0; j <= 4; ++j) a.push_back(vs[2 * nv + j]);
+  for(int j = 6; j <= nv; ++j) b.push_back(vs[2 * nv + j % nv]);
+  for(int i = 10; i <= 15; ++i) loop.push_back(vs[i * nv + 2]);
+  for(int j = 3; j <= 6; ++j) loop.push_back(vs[15 * nv + j]);
+  for(int i = 14; i >= 10; --i) loop.push_back(vs[i * nv + 6]);
+  for(int j = 5; j >= 3; --j) loop.push_back(vs[10 * nv + j]);   // one-edge gap left open
+  for(const auto& p : {a, b, loop}) ASSERT_TRUE(SWN::add_vertex_polyline_to_chain(m, p, chain));
+  auto l1 = m.add_property_map<Mesh::Face_index, int>("f:l1", 0).first;
+  auto l2 = m.add_property_map<Mesh::Face_index, int>("f:l2", 0).first;
+  auto G1 = m.add_property_map<Mesh::Edge_index, int>("e:G1", 0).first;
+  auto G2 = m.add_property_map<Mesh::Edge_index, int>("e:G2", 0).first;
+  auto w1 = m.add_property_map<Mesh::Halfedge_index, double>("h:w1", 0).first;
+  auto w2 = m.add_property_map<Mesh::Halfedge_index, double>("h:w2", 0).first;
+  SWN::Solve_report concurrent, sequential;
+  ASSERT_TRUE(CGAL::surface_winding_numbers(m, chain, l1, SWN::parameters::nonbounding_chain_map(G1,
+                SWN::parameters::winding_number_map(w1, SWN::parameters::report(std::ref(concurrent))))));
+  ASSERT_TRUE(CGAL::surface_winding_numbers(m, chain, l2, SWN::parameters::nonbounding_chain_map(G2,
+                SWN::parameters::winding_number_map(w2, SWN::parameters::concurrent_factorizations(false,
+                SWN::parameters::report(std::ref(sequential))))))) << sequential.error;
+  EXPECT_TRUE(concurrent.hodge_projection);
+  EXPECT_TRUE(sequential.hodge_projection);
+  int inside = 0, nG = 0;
+  for(auto f : faces(m)) { EXPECT_EQ(l1[f], l2[f]); inside += l1[f] == 1; }
+  for(auto e : edges(m)) { EXPECT_EQ(G1[e], G2[e]); nG += G1[e] != 0; }
+  for(auto h : halfedges(m))
+    if(std::isfinite(w1[h]) || std::isfinite(w2[h])) EXPECT_NEAR(w1[h], w2[h], 1e-9);
+  EXPECT_EQ(inside, 2 * 5 * 4);
+  EXPECT_EQ(nG, nv);
+  EXPECT_NEAR(concurrent.lp_objective, sequential.lp_objective, 1e-9 * (1 + sequential.lp_objective));
+
+  // the solver class keeps the 2-form Laplacian factorized on the second thread for its next solve
+  SWN::Surface_winding_numbers_solver<Mesh> solver(m);
+  auto l3 = m.add_property_map<Mesh::Face_index, int>("f:l3", 0).first;
+  for(int k = 0; k < 2; ++k)
+  {
+    ASSERT_TRUE(solver.solve(chain, l3)) << solver.report().error;
+    EXPECT_TRUE(solver.report().hodge_projection);
+    for(auto f : faces(m)) EXPECT_EQ(l3[f], l1[f]);
+  }
+}

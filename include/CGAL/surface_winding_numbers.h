@@ -106,6 +106,11 @@ connected component, the label covering the largest area is 0.
     \cgalParamType{Boolean}
     \cgalParamDefault{`false`}
   \cgalParamNEnd
+  \cgalParamNBegin{Surface_winding_numbers::parameters::concurrent_factorizations}
+    \cgalParamDescription{when the curve has interior endpoints on a mesh with handles, factorizes the 2-form Laplacian of the Hodge projection on a second thread (`std::async`) while the first jump-Laplace system is factorized and solved; same results either way. Set it to `false` if the sparse linear solver cannot run two factorizations at once}
+    \cgalParamType{Boolean}
+    \cgalParamDefault{`true` (`false` without `CGAL_HAS_THREADS`)}
+  \cgalParamNEnd
   \cgalParamNBegin{Surface_winding_numbers::parameters::report}
     \cgalParamDescription{receives what the solve did (sizes, topology, LP size and objective, timings) and, on failure, why}
     \cgalParamType{`std::reference_wrapper<CGAL::Surface_winding_numbers::Solve_report>`}

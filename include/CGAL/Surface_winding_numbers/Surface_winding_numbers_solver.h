@@ -181,7 +181,8 @@ public:
   \param chain_map the input curves, as an integer 1-chain on the edges
   \param label_map receives the winding number label W of every face
   \param np optional named parameters among `nonbounding_chain_map`, `nonbounding_chain_real_map`,
-         `bounding_chain_map`, `winding_number_map`, `epsilon`, `lp_solver`, `report`, `verbose`
+         `bounding_chain_map`, `winding_number_map`, `epsilon`, `lp_solver`, `use_reduced_residual`,
+         `concurrent_factorizations`, `report`, `verbose`
          (see `CGAL::surface_winding_numbers()`).
   \returns `true` on success. On failure no output map is written and `report().error` says why.
   */
@@ -205,6 +206,7 @@ public:
       options.epsilon = choose_parameter(get_parameter(np, snp::epsilon), 0.01);
       options.verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
       options.reduced_residual = choose_parameter(get_parameter(np, snp::use_reduced_residual), false);
+      options.concurrent_factorizations = choose_parameter(get_parameter(np, snp::concurrent_factorizations), true);
 
       std::vector<double> chain(core_->tables().ne, 0.);
       for(edge_descriptor e : edges(tm_)) chain[get(eim_, e)] = double(get(chain_map, e));

@@ -18,6 +18,7 @@ enum winding_number_map_t { winding_number_map };
 enum epsilon_t { epsilon };
 enum lp_solver_t { lp_solver };
 enum use_reduced_residual_t { use_reduced_residual };
+enum concurrent_factorizations_t { concurrent_factorizations };
 enum report_t { report };
 } // namespace internal_np
 /// \endcond
@@ -70,6 +71,7 @@ CGAL_SWN_NAMED_PARAMETER(lp_solver_t, lp_solver)
 /// `true`: approximate the residual function by the reduced problem of the paper's Sec. 6 (gaps
 /// closed by shortest paths, one shift per region); default `false` (the exact Eq. 11)
 CGAL_SWN_NAMED_PARAMETER(use_reduced_residual_t, use_reduced_residual)
+CGAL_SWN_NAMED_PARAMETER(concurrent_factorizations_t, concurrent_factorizations)
 /// @}
 
 #undef CGAL_SWN_NAMED_PARAMETER

@@ -20,8 +20,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <future>
 #include <iostream>
 #include <string>
+#include <system_error>
 #include <vector>
 
 namespace CGAL {
@@ -33,6 +35,7 @@ struct Solve_options
   double epsilon = 0.01;
   bool verbose = false;
   bool reduced_residual = false;   // paper Sec. 6 instead of the exact Eq. 11
+  bool concurrent_factorizations = true;   // 2-form Laplacian factorized on a second thread
 };
 
 struct Core_result
@@ -111,13 +114,25 @@ public:
                 << rep.curve_edges << " curve edges, " << rep.interior_endpoints << " interior endpoints\n";
 
     Core_result r;
+    rep.homology_correction = !m_.all_components_disks_or_spheres();
+    // The 2-form Laplacian does not depend on the curve: when the Hodge projection will need it, it
+    // is assembled and factorized on a second thread while this one solves for u. Its time counts
+    // in the Hodge step as far as it is waited for.
+    std::future<void> hodge_factorization;
+#ifdef CGAL_HAS_THREADS
+    if(options.concurrent_factorizations && rep.homology_correction && rep.interior_endpoints > 0 &&
+       !hodge_.assembled())
+    {
+      try { hodge_factorization = std::async(std::launch::async, [this] { hodge_.assemble(m_, star_); }); }
+      catch(const std::system_error&) {}   // no thread available: factorized when needed
+    }
+#endif
     // u: jump Laplace solve (Eq. 10) with jumps Gamma
     Jump_laplace_system<LA> L;
     r.u = first_jump_laplace_solve(chain, endpoint, L);
     rep.time_jump_laplace = clock.lap();
     if(verbose) std::cerr << "[swn] jump Laplace solve (" << L.size() << " unknowns): " << rep.time_jump_laplace << " s\n";
 
-    rep.homology_correction = !m_.all_components_disks_or_spheres();
     rep.hodge_projection = false;
     rep.lp_ran = false;
     rep.reduced_residual = false;
@@ -133,6 +148,7 @@ public:
     else
     {
       // omega = D u (Eq. 5); gamma = harmonic part (Eq. 9) when the curve has interior endpoints
+      if(hodge_factorization.valid()) hodge_factorization.get();   // rethrows a failed factorization
       const std::vector<double> gamma = harmonic_part_of(r.u, endpoint, rep.interior_endpoints > 0);
       rep.hodge_projection = rep.interior_endpoints > 0;
       rep.time_hodge = clock.lap();
