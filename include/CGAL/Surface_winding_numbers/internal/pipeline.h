@@ -7,6 +7,7 @@
 #ifndef CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_PIPELINE_H
 #define CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_PIPELINE_H
 
+#include <CGAL/config.h>
 #include <CGAL/Surface_winding_numbers/Solve_report.h>
 #include <CGAL/Surface_winding_numbers/internal/cotan_weights.h>
 #include <CGAL/Surface_winding_numbers/internal/derivatives.h>
