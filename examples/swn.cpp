@@ -49,6 +49,8 @@ static const char* usage =
   "                         glpk (simplex)\n"
   "  --reduced-residual     approximate the residual LP by the paper's reduced problem (Sec. 6): gaps\n"
   "                         closed by shortest paths, one shift per region (faster, approximate)\n"
+  "  --sequential           factorize the Hodge projection's matrix after the first solve, on the same\n"
+  "                         thread (default: on a second thread, during the first solve)\n"
   "  --linear-solver NAME   sparse Cholesky solver: cholmod (SuiteSparse, the default when built with it)\n"
   "                         or ldlt (Eigen SimplicialLDLT)\n"
   "  --quiet                print nothing but errors\n"
@@ -87,7 +89,7 @@ struct Options
   std::string linear_solver = "ldlt";
 #endif
   double epsilon = 0.01;
-  bool quiet = false, verbose = false, help = false, reduced_residual = false;
+  bool quiet = false, verbose = false, help = false, reduced_residual = false, sequential = false;
 };
 
 Options parse_arguments(int argc, char** argv)
@@ -112,6 +114,7 @@ Options parse_arguments(int argc, char** argv)
     else if(a == "--quiet") o.quiet = true;
     else if(a == "--verbose") o.verbose = true;
     else if(a == "--reduced-residual") o.reduced_residual = true;
+    else if(a == "--sequential") o.sequential = true;
     else if(a == "--epsilon")
     {
       const std::string v = next();
@@ -220,8 +223,9 @@ int main(int argc, char** argv)
       SWN::parameters::winding_number_map(w, SWN::parameters::nonbounding_chain_map(G,
       SWN::parameters::nonbounding_chain_real_map(g, SWN::parameters::bounding_chain_map(B,
       SWN::parameters::epsilon(opt.epsilon, SWN::parameters::use_reduced_residual(opt.reduced_residual,
+      SWN::parameters::concurrent_factorizations(!opt.sequential,
       SWN::parameters::lp_solver(std::ref(lp),
-      SWN::parameters::report(std::ref(report)))))))))
+      SWN::parameters::report(std::ref(report))))))))))
         .verbose(opt.verbose).sparse_linear_solver(sparse_solver));
   };
   // the LP backend and the sparse solver are chosen at run time among the compiled-in ones

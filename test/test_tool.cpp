@@ -236,6 +236,10 @@ TEST(Tool, DoubleTorusWithLoopsHasThreeLabelLevels)
   EXPECT_EQ(h.at(2), 582);
   EXPECT_NE(summary.find("\"interior_endpoints\": 14"), std::string::npos);
   EXPECT_NE(summary.find("\"reduced_residual\": true"), std::string::npos);
+  // both factorizations on one thread: the same labels
+  const std::map<int, int> hs =
+    solve_demo("'" + demo + "DoubleTorusWithLoops.obj' --reduced-residual --sequential", "dtloops-seq");
+  EXPECT_EQ(hs, h);
 }
 
 TEST(Tool, DoubleTorusWithLoopsExactResidual)
