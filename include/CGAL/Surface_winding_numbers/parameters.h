@@ -71,6 +71,10 @@ CGAL_SWN_NAMED_PARAMETER(lp_solver_t, lp_solver)
 /// `true`: approximate the residual function by the reduced problem of the paper's Sec. 6 (gaps
 /// closed by shortest paths, one shift per region); default `false` (the exact Eq. 11)
 CGAL_SWN_NAMED_PARAMETER(use_reduced_residual_t, use_reduced_residual)
+/// `true` (the default, where `CGAL_HAS_THREADS` is defined): when the Hodge projection is needed, the
+/// 2-form Laplacian is factorized on a second thread while the first jump-Laplace system is; `false`:
+/// one after the other, on the calling thread. Same results either way (see
+/// `use_single_threaded_openblas()` for OpenBLAS)
 CGAL_SWN_NAMED_PARAMETER(concurrent_factorizations_t, concurrent_factorizations)
 /// @}
 
