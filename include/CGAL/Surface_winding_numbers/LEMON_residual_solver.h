@@ -875,6 +875,7 @@ private:
     std::size_t n = 0;
     for(std::size_t v = 0; v < lv.n; ++v)
       if(dist[v] >= 0) id[v] = n++;
+    const std::size_t band = n;
     for(std::size_t r = 0; r < lv.n; ++r)
     {
       if(id[r] != npos) continue;
@@ -906,12 +907,8 @@ private:
     const auto t0 = std::chrono::steady_clock::now();
     if(!solve_whole(n, sub, U, delta, x, why)) return false;
     if(verbose_)
-    {
-      std::size_t band = 0;
-      for(int d : dist) band += d >= 0 ? 1 : 0;
       std::cerr << "[swn] multilevel: band of " << band << " nodes (" << n << " with the pieces, " << sub.size()
                 << " arcs) solved in " << seconds(t0) << " s\n";
-    }
     for(std::size_t v = 0; v < lv.n; ++v) pi[v] += delta[id[v]];
     // the band's optimal flow is exact on its arcs; the arcs inside the pieces keep theirs
     lv.x.resize(lv.arcs.size(), 0);

@@ -116,13 +116,13 @@ public:
 
     Core_result r;
     rep.homology_correction = !m_.all_components_disks_or_spheres();
+    const bool open_curve = rep.interior_endpoints > 0;   // the homology correction needs the Hodge projection
     // The 2-form Laplacian does not depend on the curve: when the Hodge projection will need it, it
     // is assembled and factorized on a second thread while this one solves for u. Its time counts
     // in the Hodge step as far as it is waited for.
     std::future<void> hodge_factorization;
 #ifdef CGAL_HAS_THREADS
-    if(options.concurrent_factorizations && rep.homology_correction && rep.interior_endpoints > 0 &&
-       !hodge_.assembled())
+    if(options.concurrent_factorizations && rep.homology_correction && open_curve && !hodge_.assembled())
     {
       try { hodge_factorization = std::async(std::launch::async, [this] { hodge_.assemble(m_, star_); }); }
       catch(const std::system_error&) {}   // no thread available: factorized when needed
@@ -150,8 +150,8 @@ public:
     {
       // omega = D u (Eq. 5); gamma = harmonic part (Eq. 9) when the curve has interior endpoints
       if(hodge_factorization.valid()) hodge_factorization.get();   // rethrows a failed factorization
-      const std::vector<double> gamma = harmonic_part_of(r.u, endpoint, rep.interior_endpoints > 0);
-      rep.hodge_projection = rep.interior_endpoints > 0;
+      const std::vector<double> gamma = harmonic_part_of(r.u, endpoint, open_curve);
+      rep.hodge_projection = open_curve;
       rep.time_hodge = clock.lap();
       if(verbose) std::cerr << "[swn] Darboux derivative and harmonic part: " << rep.time_hodge << " s\n";
 
