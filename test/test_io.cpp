@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -998,6 +999,119 @@ TEST(Writers, WObjAuthorsFormat)
         EXPECT_EQ(vt[corner - 1].second, 1.);
       }
     }
+}
+
+// A grid of 2 * 60 * 60 triangles: every writer's output spans many of the 64 KiB blocks it is gathered in.
+// Extreme doubles (denormals, huge, negative zero, values with 17 significant digits) read back bit for bit
+// from w.obj and the ASCII PLY; the binary PLY has exactly the size its header announces.
+TEST(Writers, LargeOutputsReadBackExactly)
+{
+  const int n = 60;
+  Mesh m;
+  for(int j = 0; j <= n; ++j)
+    for(int i = 0; i <= n; ++i) m.add_vertex(Point(i / 7.0, j * 1e-3 / 3.0, 1e10 + i * 0.1));
+  auto vid = [n](int i, int j) { return VI(static_cast<Mesh::size_type>(j * (n + 1) + i)); };
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i)
+    {
+      ASSERT_NE(m.add_face(vid(i, j), vid(i + 1, j), vid(i + 1, j + 1)), Mesh::null_face());
+      ASSERT_NE(m.add_face(vid(i, j), vid(i + 1, j + 1), vid(i, j + 1)), Mesh::null_face());
+    }
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<double> w(m.number_of_halfedges());
+  for(std::size_t k = 0; k < w.size(); ++k)
+  {
+    switch(k % 6)
+    {
+      case 0: w[k] = u(rng); break;
+      case 1: w[k] = u(rng) * 1e300; break;
+      case 2: w[k] = std::numeric_limits<double>::denorm_min() * double(k); break;
+      case 3: w[k] = -0.0; break;
+      case 4: w[k] = std::nan(""); break;
+      default: w[k] = std::nextafter(double(k % 11), 20.0); break;
+    }
+  }
+  auto bits = [](double x) { std::uint64_t b; std::memcpy(&b, &x, 8); return b; };
+  auto parse = [](const std::string& tok) {   // exact, locale independent, denormals included
+    double x = 0;
+    const auto r = std::from_chars(tok.data(), tok.data() + tok.size(), x);
+    EXPECT_TRUE(r.ec == std::errc() && r.ptr == tok.data() + tok.size()) << tok;
+    return x;
+  };
+
+  std::ostringstream wobj;
+  IO::write_w_obj(wobj, m, w);
+  ASSERT_GT(wobj.str().size(), std::size_t(10) << 16);
+  std::istringstream is(wobj.str());
+  std::string line;
+  std::size_t nv = 0, nvt = 0, nf = 0;
+  std::vector<double> expected;   // w per corner, in the writer's order
+  for(FI f : m.faces())
+  {
+    auto h = m.halfedge(f);
+    for(int k = 0; k < 3; ++k, h = m.next(h)) expected.push_back(w[std::size_t(h)]);
+  }
+  while(std::getline(is, line))
+  {
+    std::istringstream ls(line);
+    std::string kw, a, b, c;
+    ls >> kw >> a >> b >> c;
+    if(kw == "v")
+    {
+      const Point& p = m.point(VI(static_cast<Mesh::size_type>(nv++)));
+      EXPECT_EQ(bits(parse(a)), bits(p.x()));
+      EXPECT_EQ(bits(parse(b)), bits(p.y()));
+      EXPECT_EQ(bits(parse(c)), bits(p.z()));
+    }
+    else if(kw == "vt")
+    {
+      const double x = expected.at(nvt++);
+      if(std::isnan(x)) { EXPECT_EQ(a, "0"); EXPECT_EQ(b, "0"); }
+      else { EXPECT_EQ(bits(parse(a)), bits(x)) << a; EXPECT_EQ(b, "1"); }
+    }
+    else if(kw == "f") ++nf;
+  }
+  EXPECT_EQ(nv, m.number_of_vertices());
+  EXPECT_EQ(nvt, 3 * m.number_of_faces());
+  EXPECT_EQ(nf, m.number_of_faces());
+
+  std::vector<int> labels(m.number_of_faces());
+  std::vector<double> wf(m.number_of_faces());
+  for(std::size_t f = 0; f < labels.size(); ++f) { labels[f] = int(f % 7) - 3; wf[f] = u(rng); }
+  std::ostringstream bin, ascii;
+  IO::write_labeled_ply(bin, m, labels, wf, true);
+  IO::write_labeled_ply(ascii, m, labels, wf, false);
+  const std::string b = bin.str();
+  const std::size_t header = b.find("end_header\n") + std::string("end_header\n").size();
+  // vertices: 3 doubles; faces: count, 3 indices, label, float, 3 colour bytes
+  EXPECT_EQ(b.size() - header, m.number_of_vertices() * 24 + m.number_of_faces() * (1 + 12 + 4 + 4 + 3));
+  std::istringstream as(ascii.str());
+  while(std::getline(as, line) && line != "end_header") {}
+  for(std::size_t v = 0; v < m.number_of_vertices(); ++v)
+  {
+    ASSERT_TRUE(std::getline(as, line));
+    std::istringstream ls(line);
+    std::string x, y, z;
+    ls >> x >> y >> z;
+    const Point& p = m.point(VI(static_cast<Mesh::size_type>(v)));
+    EXPECT_EQ(bits(parse(x)), bits(p.x()));
+    EXPECT_EQ(bits(parse(z)), bits(p.z()));
+  }
+  for(std::size_t f = 0; f < labels.size(); ++f)
+  {
+    ASSERT_TRUE(std::getline(as, line));
+    std::istringstream ls(line);
+    int three, i0, i1, i2, label;
+    std::string wtok;
+    ls >> three >> i0 >> i1 >> i2 >> label >> wtok;
+    EXPECT_EQ(three, 3);
+    EXPECT_EQ(label, labels[f]);
+    float wv = 0;
+    EXPECT_EQ(std::from_chars(wtok.data(), wtok.data() + wtok.size(), wv).ec, std::errc());
+    EXPECT_EQ(wv, static_cast<float>(wf[f]));
+  }
+  EXPECT_FALSE(std::getline(as, line));
 }
 
 TEST(Writers, ChainObjRoundTripWithMultiplicity)

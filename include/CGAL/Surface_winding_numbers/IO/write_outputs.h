@@ -89,18 +89,51 @@ void check_mesh_for_writing(const Mesh& m)
       throw std::invalid_argument("only triangle meshes can be written");
 }
 
-template <class T>
-void put_le(std::ostream& os, T value)
+// Gathers output in a 64 KiB buffer and hands it to the stream in large blocks: one `ostream` call per
+// number costs more than formatting the number. Numbers are written locale independently, doubles as the
+// shortest decimal that reads back to the same value (std::to_chars), binary values little endian.
+class Output_buffer
 {
-  unsigned char b[sizeof(T)];
-  std::memcpy(b, &value, sizeof(T));
-  // host to little endian
-  const std::uint16_t probe = 1;
-  unsigned char first;
-  std::memcpy(&first, &probe, 1);
-  if(first == 0) std::reverse(b, b + sizeof(T));
-  os.write(reinterpret_cast<const char*>(b), sizeof(T));
-}
+public:
+  explicit Output_buffer(std::ostream& os) : os_(os) { buf_.reserve(capacity + 64); }
+  Output_buffer(const Output_buffer&) = delete;
+  Output_buffer& operator=(const Output_buffer&) = delete;
+  ~Output_buffer() { flush(); }
+
+  Output_buffer& operator<<(std::string_view s) { buf_.append(s.data(), s.size()); return spill(); }
+  Output_buffer& operator<<(char c) { buf_ += c; return spill(); }
+  template <class Number, class = std::enable_if_t<std::is_arithmetic<Number>::value> >
+  Output_buffer& operator<<(Number x)
+  {
+    char b[48];
+    auto r = std::to_chars(b, b + sizeof(b), x);
+    buf_.append(b, r.ptr);
+    return spill();
+  }
+  template <class T>
+  void put_le(T value)
+  {
+    unsigned char b[sizeof(T)];
+    std::memcpy(b, &value, sizeof(T));
+    const std::uint16_t probe = 1;   // host to little endian
+    unsigned char first;
+    std::memcpy(&first, &probe, 1);
+    if(first == 0) std::reverse(b, b + sizeof(T));
+    buf_.append(reinterpret_cast<const char*>(b), sizeof(T));
+    spill();
+  }
+  void flush()
+  {
+    if(!buf_.empty()) os_.write(buf_.data(), std::streamsize(buf_.size()));
+    buf_.clear();
+  }
+
+private:
+  static constexpr std::size_t capacity = std::size_t(1) << 16;
+  Output_buffer& spill() { if(buf_.size() >= capacity) flush(); return *this; }
+  std::ostream& os_;
+  std::string buf_;
+};
 
 // ---- value adapters: a std::vector indexed by the descriptor's index, a callable, or a readable property map
 template <class T> struct is_std_vector : std::false_type {};
@@ -227,7 +260,9 @@ void write_labels(std::ostream& os, const CGAL::Surface_mesh<Point>& mesh, const
   std::vector<int> l = internal::face_ints(mesh, labels);
   if(l.size() != mesh.number_of_faces())
     throw std::invalid_argument("write_labels: one label per face expected");
-  for(int x : l) os << x << '\n';
+  internal::Output_buffer out(os);
+  for(int x : l) out << x << '\n';
+  out.flush();
   internal::check_stream(os, "labels");
 }
 
@@ -292,26 +327,27 @@ void write_labeled_ply(std::ostream& os, const CGAL::Surface_mesh<Point>& mesh, 
   if(has_w) os << "property float winding_number\n";
   if(has_l) os << "property uchar red\nproperty uchar green\nproperty uchar blue\n";
   os << "end_header\n";
+  internal::Output_buffer out(os);
   if(binary)
   {
     for(auto v : mesh.vertices())
     {
       const Point& p = mesh.point(v);
-      internal::put_le<double>(os, CGAL::to_double(p.x()));
-      internal::put_le<double>(os, CGAL::to_double(p.y()));
-      internal::put_le<double>(os, CGAL::to_double(p.z()));
+      out.put_le<double>(CGAL::to_double(p.x()));
+      out.put_le<double>(CGAL::to_double(p.y()));
+      out.put_le<double>(CGAL::to_double(p.z()));
     }
     for(auto f : mesh.faces())
     {
       auto t = internal::face_vertices(mesh, f);
-      internal::put_le<std::uint8_t>(os, 3);
-      for(std::size_t k : t) internal::put_le<std::int32_t>(os, static_cast<std::int32_t>(k));
-      if(has_l) internal::put_le<std::int32_t>(os, labels[std::size_t(f)]);
-      if(has_w) internal::put_le<float>(os, static_cast<float>(face_winding_numbers[std::size_t(f)]));
+      out.put_le<std::uint8_t>(3);
+      for(std::size_t k : t) out.put_le<std::int32_t>(static_cast<std::int32_t>(k));
+      if(has_l) out.put_le<std::int32_t>(labels[std::size_t(f)]);
+      if(has_w) out.put_le<float>(static_cast<float>(face_winding_numbers[std::size_t(f)]));
       if(has_l)
       {
         auto c = label_color(labels[std::size_t(f)]);
-        for(int k = 0; k < 3; ++k) internal::put_le<std::uint8_t>(os, c[k]);
+        for(int k = 0; k < 3; ++k) out.put_le<std::uint8_t>(c[k]);
       }
     }
   }
@@ -320,29 +356,29 @@ void write_labeled_ply(std::ostream& os, const CGAL::Surface_mesh<Point>& mesh, 
     for(auto v : mesh.vertices())
     {
       const Point& p = mesh.point(v);
-      os << internal::format_double(CGAL::to_double(p.x())) << ' ' << internal::format_double(CGAL::to_double(p.y()))
-         << ' ' << internal::format_double(CGAL::to_double(p.z())) << '\n';
+      out << double(CGAL::to_double(p.x())) << ' ' << double(CGAL::to_double(p.y())) << ' '
+          << double(CGAL::to_double(p.z())) << '\n';
     }
     for(auto f : mesh.faces())
     {
       auto t = internal::face_vertices(mesh, f);
-      os << "3 " << t[0] << ' ' << t[1] << ' ' << t[2];
-      if(has_l) os << ' ' << labels[std::size_t(f)];
+      out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2];
+      if(has_l) out << ' ' << labels[std::size_t(f)];
       if(has_w)
       {
-        char buf[64];
-        float w = static_cast<float>(face_winding_numbers[std::size_t(f)]);
-        if(std::isnan(w)) os << " nan";
-        else { auto r = std::to_chars(buf, buf + sizeof(buf), w); os << ' ' << std::string(buf, r.ptr); }
+        const float w = static_cast<float>(face_winding_numbers[std::size_t(f)]);
+        if(std::isnan(w)) out << " nan";
+        else out << ' ' << w;
       }
       if(has_l)
       {
         auto c = label_color(labels[std::size_t(f)]);
-        os << ' ' << int(c[0]) << ' ' << int(c[1]) << ' ' << int(c[2]);
+        out << ' ' << int(c[0]) << ' ' << int(c[1]) << ' ' << int(c[2]);
       }
-      os << '\n';
+      out << '\n';
     }
   }
+  out.flush();
   internal::check_stream(os, "PLY");
 }
 
@@ -358,7 +394,7 @@ void write_labeled_ply(const std::string& path, const CGAL::Surface_mesh<Point>&
 
 /*!
   \brief writes the authors' winding-number OBJ (notes section 5.4): a comment header with the counts,
-  `v x y z` lines (17 significant digits), one `vt w 1` line per corner (`vt 0 0` where w is NaN, i.e.
+  `v x y z` lines (shortest decimals that read back to the same doubles), one `vt w 1` line per corner (`vt 0 0` where w is NaN, i.e.
   undefined), and `f i/t/ j/t/ k/t/` lines (1-based vertex and corner indices). Corners are numbered in face
   order and, within a face, in the order of `vertices_around_face(halfedge(f))`.
 
@@ -379,38 +415,32 @@ void write_w_obj(std::ostream& os, const CGAL::Surface_mesh<Point>& mesh, const 
      << "#     edges: " << mesh.number_of_edges() << "\n"
      << "#     faces: " << mesh.number_of_faces() << "\n"
      << "# texture coordinates: YES\n";
-  // %.17g (max_digits10), locale independent
-  char buf[64];
-  auto fmt = [&buf](double x) {
-    auto r = std::to_chars(buf, buf + sizeof(buf), x, std::chars_format::general,
-                           std::numeric_limits<double>::max_digits10);
-    return std::string_view(buf, static_cast<std::size_t>(r.ptr - buf));
-  };
+  internal::Output_buffer out(os);
   for(auto v : mesh.vertices())
   {
     const Point& p = mesh.point(v);
-    os << "v " << fmt(CGAL::to_double(p.x()));  // one fmt() per statement: they share a buffer
-    os << ' ' << fmt(CGAL::to_double(p.y()));
-    os << ' ' << fmt(CGAL::to_double(p.z())) << '\n';
+    out << "v " << double(CGAL::to_double(p.x())) << ' ' << double(CGAL::to_double(p.y())) << ' '
+        << double(CGAL::to_double(p.z())) << '\n';
   }
   for(auto f : mesh.faces())
   {
     auto h = mesh.halfedge(f);
     for(int k = 0; k < 3; ++k, h = mesh.next(h))
     {
-      double w = static_cast<double>(internal::value_at(corner_value, h));
-      if(std::isnan(w)) os << "vt 0 0\n";
-      else os << "vt " << fmt(w) << " 1\n";
+      const double w = static_cast<double>(internal::value_at(corner_value, h));
+      if(std::isnan(w)) out << "vt 0 0\n";
+      else out << "vt " << w << " 1\n";
     }
   }
   std::size_t corner = 1;
   for(auto f : mesh.faces())
   {
     auto t = internal::face_vertices(mesh, f);
-    os << "f";
-    for(int k = 0; k < 3; ++k) os << ' ' << t[k] + 1 << '/' << corner++ << '/';
-    os << '\n';
+    out << 'f';
+    for(int k = 0; k < 3; ++k) out << ' ' << t[k] + 1 << '/' << corner++ << '/';
+    out << '\n';
   }
+  out.flush();
   internal::check_stream(os, "w.obj");
 }
 
