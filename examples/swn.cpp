@@ -19,10 +19,12 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <future>
 #include <iostream>
 #include <map>
 #include <sstream>
 #include <string>
+#include <system_error>
 #include <vector>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -49,8 +51,9 @@ static const char* usage =
   "                         glpk (simplex)\n"
   "  --reduced-residual     approximate the residual LP by the paper's reduced problem (Sec. 6): gaps\n"
   "                         closed by shortest paths, one shift per region (faster, approximate)\n"
-  "  --sequential           factorize the Hodge projection's matrix after the first solve, on the same\n"
-  "                         thread (default: on a second thread, during the first solve)\n"
+  "  --sequential           use one thread: factorize the Hodge projection's matrix after the first\n"
+  "                         solve and write w.obj after the other files (default: both on a second\n"
+  "                         thread, during the first solve and while the other files are written)\n"
   "  --linear-solver NAME   sparse Cholesky solver: cholmod (SuiteSparse, the default when built with it)\n"
   "                         or ldlt (Eigen SimplicialLDLT)\n"
   "  --quiet                print nothing but errors\n"
@@ -147,6 +150,18 @@ Options parse_arguments(int argc, char** argv)
 double seconds_since(std::chrono::steady_clock::time_point t0)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// runs `task` on a second thread, or, with --sequential (or when no thread can be started), in get()
+template <class Task>
+std::future<void> start_task(bool sequential, Task task)
+{
+  if(!sequential)
+  {
+    try { return std::async(std::launch::async, task); }
+    catch(const std::system_error&) {}
+  }
+  return std::async(std::launch::deferred, task);
 }
 
 } // namespace
@@ -272,14 +287,19 @@ int main(int argc, char** argv)
     try
     {
       SIO::Atomic_output_dir out(opt.output_dir);
-      SIO::write_labels(out.path("labels.txt"), mesh, labels);
-      SIO::write_labeled_ply(out.path("mesh.ply"), mesh, labels, w);
-      SIO::write_w_obj(out.path("w.obj"), mesh, w);
-      SIO::write_chain_obj(out.path("bounding.obj"), mesh, B);
-      SIO::write_chain_obj(out.path("nonbounding.obj"), mesh, G);
       auto completed = mesh.add_property_map<Mesh::Edge_index, int>("e:completed", 0).first;
       for(auto e : edges(mesh)) completed[e] = B[e] + G[e];
+      // w.obj, the largest file, is written on a second thread while this one writes the others (the
+      // mesh and the maps are only read from here on). Declared after `out`: if a write fails, the
+      // future waits for the other thread before `out` removes the temporary files.
+      const std::string w_obj_path = out.path("w.obj");
+      std::future<void> w_obj = start_task(opt.sequential, [&] { SIO::write_w_obj(w_obj_path, mesh, w); });
+      SIO::write_labels(out.path("labels.txt"), mesh, labels);
+      SIO::write_labeled_ply(out.path("mesh.ply"), mesh, labels, w);
+      SIO::write_chain_obj(out.path("bounding.obj"), mesh, B);
+      SIO::write_chain_obj(out.path("nonbounding.obj"), mesh, G);
       SIO::write_chain_obj(out.path("completed.obj"), mesh, completed);
+      w_obj.get();   // rethrows a failed write
       t_write = seconds_since(t0);
 
       SIO::Json j;

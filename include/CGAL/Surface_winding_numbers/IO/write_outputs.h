@@ -422,22 +422,25 @@ void write_w_obj(std::ostream& os, const CGAL::Surface_mesh<Point>& mesh, const 
     out << "v " << double(CGAL::to_double(p.x())) << ' ' << double(CGAL::to_double(p.y())) << ' '
         << double(CGAL::to_double(p.z())) << '\n';
   }
+  // one walk around the faces (the halfedges of a large mesh are scattered in memory): the corner
+  // values are written at once, the corners' vertices kept for the face lines
+  std::vector<std::size_t> corner_vertex;
+  corner_vertex.reserve(3 * std::size_t(mesh.number_of_faces()));
   for(auto f : mesh.faces())
   {
     auto h = mesh.halfedge(f);
     for(int k = 0; k < 3; ++k, h = mesh.next(h))
     {
+      corner_vertex.push_back(std::size_t(mesh.target(h)));
       const double w = static_cast<double>(internal::value_at(corner_value, h));
       if(std::isnan(w)) out << "vt 0 0\n";
       else out << "vt " << w << " 1\n";
     }
   }
-  std::size_t corner = 1;
-  for(auto f : mesh.faces())
+  for(std::size_t c = 0; c < corner_vertex.size(); c += 3)
   {
-    auto t = internal::face_vertices(mesh, f);
     out << 'f';
-    for(int k = 0; k < 3; ++k) out << ' ' << t[k] + 1 << '/' << corner++ << '/';
+    for(std::size_t k = c; k < c + 3; ++k) out << ' ' << corner_vertex[k] + 1 << '/' << k + 1 << '/';
     out << '\n';
   }
   out.flush();
