@@ -954,7 +954,13 @@ inline void check_triangle_soup(const Triangle_soup& soup, const std::string& fi
         out[fill[soup.triangles[f][k]]++] = {std::uint32_t(soup.triangles[f][(k + 1) % 3]), std::uint32_t(f)};
   }
   // edges: at most two faces, traversed in opposite directions; the problem is reported at the first face (in
-  // file order) that creates it
+  // file order) that creates it. Vertices: the faces around each vertex must form a single fan; the corners
+  // of two faces glued along an edge are united as the second face of the pair is met (one scan for both)
+  Union_find uf(3 * nf);
+  auto local = [&](std::size_t f, std::size_t v) {
+    const auto& t = soup.triangles[f];
+    return 3 * f + (t[0] == v ? 0 : (t[1] == v ? 1 : 2));
+  };
   for(std::size_t f = 0; f < nf; ++f)
   {
     const auto& t = soup.triangles[f];
@@ -978,34 +984,14 @@ inline void check_triangle_soup(const Triangle_soup& soup, const std::string& fi
                                               " both traverse edge " + edge_name(a, b) +
                                               " in the same direction: the surface is not consistently oriented "
                                               "(or not orientable)");
+      if(opp1 != nf)
+      {
+        uf.unite(3 * f + k, local(opp1, a));
+        uf.unite(3 * f + (k + 1) % 3, local(opp1, b));
+      }
     }
   }
 
-  // vertices: the faces around each vertex must form a single fan
-  Union_find uf(3 * nf);
-  auto local = [&](std::size_t f, std::size_t v) {
-    const auto& t = soup.triangles[f];
-    return 3 * f + (t[0] == v ? 0 : (t[1] == v ? 1 : 2));
-  };
-  for(std::size_t f = 0; f < nf; ++f)
-  {
-    const auto& t = soup.triangles[f];
-    for(int k = 0; k < 3; ++k)
-    {
-      const std::size_t a = t[k], b = t[(k + 1) % 3];
-      for(std::uint32_t i = start[b]; i < start[b + 1]; ++i)
-        if(out[i].first == a)
-        {
-          std::size_t g = out[i].second;
-          if(g > f)
-          {
-            uf.unite(3 * f + k, local(g, a));
-            uf.unite(3 * f + (k + 1) % 3, local(g, b));
-          }
-          break;
-        }
-    }
-  }
   const std::size_t none = std::size_t(-1);
   std::vector<std::size_t> root(nv, none);
   for(std::size_t f = 0; f < nf; ++f)
