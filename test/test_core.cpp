@@ -467,6 +467,31 @@ Mesh::Property_map<Mesh::Edge_index, int> broken_meridian_and_loop(Mesh& m, int 
   for(const auto& p : {a, b, loop}) EXPECT_TRUE(SWN::add_vertex_polyline_to_chain(m, p, chain));
   return chain;
 }
+
+// labels and G of two solves on the mesh of broken_meridian_and_loop, to compare
+struct Two_solves
+{
+  explicit Two_solves(Mesh& m)
+    : l1(m.add_property_map<Mesh::Face_index, int>("f:l1", 0).first),
+      l2(m.add_property_map<Mesh::Face_index, int>("f:l2", 0).first),
+      G1(m.add_property_map<Mesh::Edge_index, int>("e:G1", 0).first),
+      G2(m.add_property_map<Mesh::Edge_index, int>("e:G2", 0).first)
+  {}
+
+  // the two agree face by face and edge by edge, and give the analytic answer: label 1 on the
+  // 2 x 5 x 4 faces inside the loop, the completed meridian (nv edges) as G
+  void expect_same_analytic_answer(const Mesh& m, int nv) const
+  {
+    int inside = 0, nG = 0;
+    for(auto f : faces(m)) { EXPECT_EQ(l1[f], l2[f]); inside += l1[f] == 1; }
+    for(auto e : edges(m)) { EXPECT_EQ(G1[e], G2[e]); nG += G1[e] != 0; }
+    EXPECT_EQ(inside, 2 * 5 * 4);
+    EXPECT_EQ(nG, nv);
+  }
+
+  Mesh::Property_map<Mesh::Face_index, int> l1, l2;
+  Mesh::Property_map<Mesh::Edge_index, int> G1, G2;
+};
 } // namespace
 
 TEST(ReducedResidual, AgreesWithTheExactResidualOnSeparatedCurves)
@@ -477,21 +502,14 @@ TEST(ReducedResidual, AgreesWithTheExactResidualOnSeparatedCurves)
   const int nu = 24, nv = 12;
   const auto chain = broken_meridian_and_loop(m, nu, nv);
   ASSERT_FALSE(::testing::Test::HasFailure());
-  auto l1 = m.add_property_map<Mesh::Face_index, int>("f:l1", 0).first;
-  auto l2 = m.add_property_map<Mesh::Face_index, int>("f:l2", 0).first;
-  auto G1 = m.add_property_map<Mesh::Edge_index, int>("e:G1", 0).first;
-  auto G2 = m.add_property_map<Mesh::Edge_index, int>("e:G2", 0).first;
+  const Two_solves s(m);
   SWN::Solve_report exact, reduced;
-  ASSERT_TRUE(CGAL::surface_winding_numbers(m, chain, l1, SWN::parameters::nonbounding_chain_map(G1, SWN::parameters::report(std::ref(exact)))));
-  ASSERT_TRUE(CGAL::surface_winding_numbers(m, chain, l2, SWN::parameters::nonbounding_chain_map(G2,
+  ASSERT_TRUE(CGAL::surface_winding_numbers(m, chain, s.l1, SWN::parameters::nonbounding_chain_map(s.G1, SWN::parameters::report(std::ref(exact)))));
+  ASSERT_TRUE(CGAL::surface_winding_numbers(m, chain, s.l2, SWN::parameters::nonbounding_chain_map(s.G2,
                 SWN::parameters::use_reduced_residual(true, SWN::parameters::report(std::ref(reduced)))))) << reduced.error;
   EXPECT_TRUE(reduced.reduced_residual);
   EXPECT_LT(reduced.lp_variables * 10, exact.lp_variables);
-  int inside = 0, nG = 0;
-  for(auto f : faces(m)) { EXPECT_EQ(l1[f], l2[f]); inside += l1[f] == 1; }
-  for(auto e : edges(m)) { EXPECT_EQ(G1[e], G2[e]); nG += G1[e] != 0; }
-  EXPECT_EQ(inside, 2 * 5 * 4);
-  EXPECT_EQ(nG, nv);
+  s.expect_same_analytic_answer(m, nv);
 }
 
 TEST(ConcurrentFactorizations, SameAnswerAsSequential)
@@ -503,27 +521,20 @@ TEST(ConcurrentFactorizations, SameAnswerAsSequential)
   const int nu = 24, nv = 12;
   const auto chain = broken_meridian_and_loop(m, nu, nv);
   ASSERT_FALSE(::testing::Test::HasFailure());
-  auto l1 = m.add_property_map<Mesh::Face_index, int>("f:l1", 0).first;
-  auto l2 = m.add_property_map<Mesh::Face_index, int>("f:l2", 0).first;
-  auto G1 = m.add_property_map<Mesh::Edge_index, int>("e:G1", 0).first;
-  auto G2 = m.add_property_map<Mesh::Edge_index, int>("e:G2", 0).first;
+  const Two_solves s(m);
   auto w1 = m.add_property_map<Mesh::Halfedge_index, double>("h:w1", 0).first;
   auto w2 = m.add_property_map<Mesh::Halfedge_index, double>("h:w2", 0).first;
   SWN::Solve_report concurrent, sequential;
-  ASSERT_TRUE(CGAL::surface_winding_numbers(m, chain, l1, SWN::parameters::nonbounding_chain_map(G1,
+  ASSERT_TRUE(CGAL::surface_winding_numbers(m, chain, s.l1, SWN::parameters::nonbounding_chain_map(s.G1,
                 SWN::parameters::winding_number_map(w1, SWN::parameters::report(std::ref(concurrent))))));
-  ASSERT_TRUE(CGAL::surface_winding_numbers(m, chain, l2, SWN::parameters::nonbounding_chain_map(G2,
+  ASSERT_TRUE(CGAL::surface_winding_numbers(m, chain, s.l2, SWN::parameters::nonbounding_chain_map(s.G2,
                 SWN::parameters::winding_number_map(w2, SWN::parameters::concurrent_factorizations(false,
                 SWN::parameters::report(std::ref(sequential))))))) << sequential.error;
   EXPECT_TRUE(concurrent.hodge_projection);
   EXPECT_TRUE(sequential.hodge_projection);
-  int inside = 0, nG = 0;
-  for(auto f : faces(m)) { EXPECT_EQ(l1[f], l2[f]); inside += l1[f] == 1; }
-  for(auto e : edges(m)) { EXPECT_EQ(G1[e], G2[e]); nG += G1[e] != 0; }
+  s.expect_same_analytic_answer(m, nv);
   for(auto h : halfedges(m))
     if(std::isfinite(w1[h]) || std::isfinite(w2[h])) EXPECT_NEAR(w1[h], w2[h], 1e-9);
-  EXPECT_EQ(inside, 2 * 5 * 4);
-  EXPECT_EQ(nG, nv);
   EXPECT_NEAR(concurrent.lp_objective, sequential.lp_objective, 1e-9 * (1 + sequential.lp_objective));
 
   // the solver class keeps the 2-form Laplacian factorized on the second thread for its next solve
@@ -533,6 +544,6 @@ TEST(ConcurrentFactorizations, SameAnswerAsSequential)
   {
     ASSERT_TRUE(solver.solve(chain, l3)) << solver.report().error;
     EXPECT_TRUE(solver.report().hodge_projection);
-    for(auto f : faces(m)) EXPECT_EQ(l3[f], l1[f]);
+    for(auto f : faces(m)) EXPECT_EQ(l3[f], s.l1[f]);
   }
 }
