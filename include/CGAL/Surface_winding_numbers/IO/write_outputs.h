@@ -356,8 +356,8 @@ void write_labeled_ply(std::ostream& os, const CGAL::Surface_mesh<Point>& mesh, 
     for(auto v : mesh.vertices())
     {
       const Point& p = mesh.point(v);
-      out << double(CGAL::to_double(p.x())) << ' ' << double(CGAL::to_double(p.y())) << ' '
-          << double(CGAL::to_double(p.z())) << '\n';
+      out << CGAL::to_double(p.x()) << ' ' << CGAL::to_double(p.y()) << ' '
+          << CGAL::to_double(p.z()) << '\n';
     }
     for(auto f : mesh.faces())
     {
@@ -419,8 +419,8 @@ void write_w_obj(std::ostream& os, const CGAL::Surface_mesh<Point>& mesh, const 
   for(auto v : mesh.vertices())
   {
     const Point& p = mesh.point(v);
-    out << "v " << double(CGAL::to_double(p.x())) << ' ' << double(CGAL::to_double(p.y())) << ' '
-        << double(CGAL::to_double(p.z())) << '\n';
+    out << "v " << CGAL::to_double(p.x()) << ' ' << CGAL::to_double(p.y()) << ' '
+        << CGAL::to_double(p.z()) << '\n';
   }
   // one walk around the faces (the halfedges of a large mesh are scattered in memory): the corner
   // values are written at once, the corners' vertices kept for the face lines
