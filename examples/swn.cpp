@@ -126,7 +126,7 @@ Options parse_arguments(int argc, char** argv)
       if(v.empty() || *end != '\0' || !(o.epsilon > 0) || !std::isfinite(o.epsilon))
         throw Usage_error("--epsilon needs a positive number, got '" + v + "'");
     }
-    else if(a.rfind("-", 0) == 0 && a.size() > 1) throw Usage_error("unknown option " + a);
+    else if(a.rfind('-', 0) == 0 && a.size() > 1) throw Usage_error("unknown option " + a);
     else if(o.mesh.empty()) o.mesh = a;
     else throw Usage_error("unexpected argument '" + a + "' (only one mesh)");
   }

@@ -1006,11 +1006,11 @@ TEST(Writers, WObjAuthorsFormat)
 // from w.obj and the ASCII PLY; the binary PLY has exactly the size its header announces.
 TEST(Writers, LargeOutputsReadBackExactly)
 {
-  const int n = 60;
+  constexpr int n = 60;
   Mesh m;
   for(int j = 0; j <= n; ++j)
     for(int i = 0; i <= n; ++i) m.add_vertex(Point(i / 7.0, j * 1e-3 / 3.0, 1e10 + i * 0.1));
-  auto vid = [n](int i, int j) { return VI(static_cast<Mesh::size_type>(j * (n + 1) + i)); };
+  auto vid = [](int i, int j) { return VI(static_cast<Mesh::size_type>(j * (n + 1) + i)); };
   for(int j = 0; j < n; ++j)
     for(int i = 0; i < n; ++i)
     {
