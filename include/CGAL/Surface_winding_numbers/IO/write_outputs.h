@@ -60,16 +60,6 @@ inline void check_stream(std::ostream& os, const char* what)
     throw std::runtime_error(std::string("write error while writing ") + what);
 }
 
-// shortest round-trip representation of a double ("nan"/"inf" for non-finite values)
-inline std::string format_double(double x)
-{
-  if(std::isnan(x)) return "nan";
-  if(std::isinf(x)) return x > 0 ? "inf" : "-inf";
-  char buf[64];
-  auto r = std::to_chars(buf, buf + sizeof(buf), x);
-  return std::string(buf, r.ptr);
-}
-
 template <class Mesh>
 std::array<std::size_t, 3> face_vertices(const Mesh& m, typename Mesh::Face_index f)
 {
@@ -91,7 +81,8 @@ void check_mesh_for_writing(const Mesh& m)
 
 // Gathers output in a 64 KiB buffer and hands it to the stream in large blocks: one `ostream` call per
 // number costs more than formatting the number. Numbers are written locale independently, doubles as the
-// shortest decimal that reads back to the same value (std::to_chars), binary values little endian.
+// shortest decimal that reads back to the same value (std::to_chars; "nan" whatever the sign bit, "inf",
+// "-inf"), binary values little endian.
 class Output_buffer
 {
 public:
@@ -105,6 +96,8 @@ public:
   template <class Number, class = std::enable_if_t<std::is_arithmetic<Number>::value> >
   Output_buffer& operator<<(Number x)
   {
+    if constexpr(std::is_floating_point<Number>::value)
+      if(std::isnan(x)) return *this << std::string_view("nan");
     char b[48];
     auto r = std::to_chars(b, b + sizeof(b), x);
     buf_.append(b, r.ptr);
@@ -366,9 +359,7 @@ void write_labeled_ply(std::ostream& os, const CGAL::Surface_mesh<Point>& mesh, 
       if(has_l) out << ' ' << labels[std::size_t(f)];
       if(has_w)
       {
-        const float w = static_cast<float>(face_winding_numbers[std::size_t(f)]);
-        if(std::isnan(w)) out << " nan";
-        else out << ' ' << w;
+        out << ' ' << static_cast<float>(face_winding_numbers[std::size_t(f)]);
       }
       if(has_l)
       {
@@ -573,27 +564,28 @@ void write_chain_obj(std::ostream& os, const CGAL::Surface_mesh<Point>& mesh, co
   }
   std::size_t nedges = 0;
   for(const auto& p : pieces) nedges += p.size() - 1;
-  os << "# curve written by CGAL Surface_winding_numbers: " << pieces.size() << " polylines, " << nedges
-     << " edges (with multiplicity)\n";
+  internal::Output_buffer out(os);
+  out << "# curve written by CGAL Surface_winding_numbers: " << pieces.size() << " polylines, " << nedges
+      << " edges (with multiplicity)\n";
   if(!all_vertices)
   {
-    os << "# mesh vertices:";
-    for(std::size_t v = 0; v < nv; ++v) if(index[v] != 0) os << ' ' << v;
-    os << '\n';
+    out << "# mesh vertices:";
+    for(std::size_t v = 0; v < nv; ++v) if(index[v] != 0) out << ' ' << v;
+    out << '\n';
   }
   for(auto v : mesh.vertices())
   {
     if(index[std::size_t(v)] == 0) continue;
     const Point& p = mesh.point(v);
-    os << "v " << internal::format_double(CGAL::to_double(p.x())) << ' ' << internal::format_double(CGAL::to_double(p.y()))
-       << ' ' << internal::format_double(CGAL::to_double(p.z())) << '\n';
+    out << "v " << CGAL::to_double(p.x()) << ' ' << CGAL::to_double(p.y()) << ' ' << CGAL::to_double(p.z()) << '\n';
   }
   for(const auto& p : pieces)
   {
-    os << 'l';
-    for(std::size_t v : p) os << ' ' << index[v];
-    os << '\n';
+    out << 'l';
+    for(std::size_t v : p) out << ' ' << index[v];
+    out << '\n';
   }
+  out.flush();
   internal::check_stream(os, "curve OBJ");
 }
 
