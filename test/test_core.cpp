@@ -7,7 +7,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
+#include <string>
 #include <map>
 #include <random>
 #include <vector>
@@ -119,6 +123,125 @@ TEST(MeshTables, TorusAndTwoComponents)
   EXPECT_FALSE(t.all_components_disks_or_spheres());
   EXPECT_EQ(s.report().genus, 1);
   EXPECT_EQ(s.report().border_loops, 1u);
+}
+
+TEST(MeshTables, LocalityNumberingIsABijectionAndKeepsTheMesh)
+{
+  // faces added in a scrambled order, plus an isolated vertex: the solver's tables are renumbered
+  // (locality_order.h) and must describe the same mesh through the solver's index maps
+  Mesh m;
+  std::vector<Vertex> vs = torus_mesh(m, 12, 8);
+  Mesh shuffled;
+  std::vector<Vertex> sv;
+  for(Vertex v : vs) sv.push_back(shuffled.add_vertex(m.point(v)));
+  std::vector<std::array<Vertex, 3>> tris;
+  for(auto f : faces(m))
+  {
+    std::array<Vertex, 3> t;
+    int k = 0;
+    for(Vertex v : vertices_around_face(halfedge(f, m), m)) t[k++] = sv[std::size_t(v)];
+    tris.push_back(t);
+  }
+  std::mt19937 rng(7);
+  std::shuffle(tris.begin(), tris.end(), rng);
+  for(const auto& t : tris) shuffled.add_face(t[0], t[1], t[2]);
+  const Vertex lonely = shuffled.add_vertex(K::Point_3(9, 9, 9));
+  SWN::Surface_winding_numbers_solver<Mesh> s(shuffled);
+  ASSERT_TRUE(s.is_valid()) << s.report().error;
+  const SI::Mesh_tables& t = s.tables();
+  ASSERT_EQ(t.nv, num_vertices(shuffled));
+  ASSERT_EQ(t.ne, num_edges(shuffled));
+  ASSERT_EQ(t.nf, num_faces(shuffled));
+  std::vector<char> seen_v(t.nv, 0), seen_e(t.ne, 0), seen_f(t.nf, 0);
+  std::size_t moved = 0;
+  for(Vertex v : vertices(shuffled))
+  {
+    const std::size_t i = s.vertex_index(v);
+    ASSERT_LT(i, t.nv);
+    EXPECT_FALSE(seen_v[i]);
+    seen_v[i] = 1;
+    EXPECT_EQ(t.input_vertex_index(i), std::size_t(v));
+    EXPECT_EQ(t.point(i)[0], shuffled.point(v).x());
+    EXPECT_EQ(t.point(i)[2], shuffled.point(v).z());
+    if(i != std::size_t(v)) ++moved;
+  }
+  EXPECT_EQ(s.vertex_index(lonely), t.nv - 1);   // used by no face: last
+  for(auto e : edges(shuffled))
+  {
+    const std::size_t i = s.edge_index(e);
+    ASSERT_LT(i, t.ne);
+    EXPECT_FALSE(seen_e[i]);
+    seen_e[i] = 1;
+    EXPECT_EQ(t.input_edge_index(i), std::size_t(e));
+    EXPECT_EQ(t.ev[2 * i], s.vertex_index(source(halfedge(e, shuffled), shuffled)));   // reference direction kept
+    EXPECT_EQ(t.ev[2 * i + 1], s.vertex_index(target(halfedge(e, shuffled), shuffled)));
+  }
+  for(auto f : faces(shuffled))
+  {
+    const std::size_t i = s.face_index(f);
+    ASSERT_LT(i, t.nf);
+    EXPECT_FALSE(seen_f[i]);
+    seen_f[i] = 1;
+    EXPECT_EQ(t.input_face_index(i), std::size_t(f));
+    auto h = halfedge(f, shuffled);
+    for(std::size_t k = 0; k < 3; ++k, h = next(h, shuffled))   // corner order kept
+    {
+      EXPECT_EQ(t.fv[3 * i + k], s.vertex_index(source(h, shuffled)));
+      EXPECT_EQ(t.fe[3 * i + k], s.edge_index(edge(h, shuffled)));
+    }
+  }
+  EXPECT_GT(moved, t.nv / 2);   // the scrambled input was really renumbered
+  EXPECT_EQ(s.report().genus, 1);
+  EXPECT_EQ(t.arcs.size(), t.ne);
+}
+
+TEST(MeshTables, ErrorsNameElementsInTheInputNumbering)
+{
+  // the same scrambled grid with one face made degenerate, then one vertex made non-finite: the
+  // messages give the mesh's own indices, not the renumbered ones
+  for(int pass = 0; pass < 2; ++pass)
+  {
+    Mesh m;
+    std::vector<Vertex> vs = grid_disk(m, 10, 3, 0.);
+    Mesh s;
+    for(Vertex v : vs) s.add_vertex(m.point(v));
+    std::vector<std::array<Vertex, 3>> tris;
+    for(auto f : faces(m))
+    {
+      std::array<Vertex, 3> t;
+      int k = 0;
+      for(Vertex v : vertices_around_face(halfedge(f, m), m)) t[k++] = v;
+      tris.push_back(t);
+    }
+    std::mt19937 rng(11);
+    std::shuffle(tris.begin(), tris.end(), rng);
+    for(const auto& t : tris) s.add_face(t[0], t[1], t[2]);
+    std::string expected;
+    if(pass == 0)
+    {
+      // flatten face 57 (its third corner onto the middle of its first side); neighbours of that
+      // corner may flatten too: the first degenerate face in the mesh's order is reported
+      auto h = halfedge(Mesh::Face_index(57), s);
+      s.point(target(next(h, s), s)) = CGAL::midpoint(s.point(source(h, s)), s.point(target(h, s)));
+      std::size_t first = num_faces(s);
+      for(auto f : faces(s))
+      {
+        auto g = halfedge(f, s);
+        if(CGAL::collinear(s.point(source(g, s)), s.point(target(g, s)), s.point(target(next(g, s), s))))
+          first = std::min(first, std::size_t(f));
+      }
+      ASSERT_LE(first, 57u);
+      expected = "face " + std::to_string(first) + " has zero area";
+    }
+    else
+    {
+      s.point(Vertex(83)) = K::Point_3(std::numeric_limits<double>::quiet_NaN(), 0, 0);
+      expected = "vertex 83 has a non-finite coordinate";
+    }
+    SWN::Surface_winding_numbers_solver<Mesh> solver(s);
+    EXPECT_FALSE(solver.is_valid());
+    EXPECT_NE(solver.report().error.find(expected), std::string::npos) << solver.report().error;
+  }
 }
 
 TEST(CotanWeights, ValuesClampAndScaleInvariance)

@@ -6,6 +6,7 @@
 
 #include <CGAL/Surface_winding_numbers/Solve_report.h>
 #include <CGAL/Surface_winding_numbers/parameters.h>
+#include <CGAL/Surface_winding_numbers/internal/locality_order.h>
 #include <CGAL/Surface_winding_numbers/internal/pipeline.h>
 #ifdef CGAL_USE_GLPK
 #include <CGAL/Surface_winding_numbers/GLPK_linear_program_traits.h>
@@ -295,8 +296,12 @@ private:
     }
     m.nf = i;
     if(m.nf == 0) throw Invalid_input("the mesh has no face");
-    internal::finalize_mesh_tables(m);
-    return m;
+    // the core works in a cache-friendly numbering; the index maps follow it
+    const internal::Table_numbering n = internal::locality_numbering(m);
+    for(vertex_descriptor v : vertices(tm_)) put(vim_, v, n.vertex[get(vim_, v)]);
+    for(edge_descriptor e : edges(tm_)) put(eim_, e, n.edge[get(eim_, e)]);
+    for(face_descriptor f : faces(tm_)) put(fim_, f, n.face[get(fim_, f)]);
+    return internal::renumbered_mesh_tables(m, n);
   }
 
   // writes per-edge values to the edge map given for `tag`, if one was given

@@ -19,13 +19,15 @@ namespace internal {
 constexpr double min_cotan_weight = 1e-3;
 constexpr double max_cotan_weight = 1e3;
 
-// Rejects what no weight can be computed for: non-finite coordinates and zero-area faces.
+// Rejects what no weight can be computed for: non-finite coordinates and zero-area faces. Reports
+// the first offending element in the input's numbering.
 inline void check_geometry(const Mesh_tables& m)
 {
+  std::size_t bad = npos;
   for(std::size_t v = 0; v < m.nv; ++v)
     for(int k = 0; k < 3; ++k)
-      if(!std::isfinite(m.points[3 * v + k]))
-        throw Invalid_input("vertex " + std::to_string(v) + " has a non-finite coordinate");
+      if(!std::isfinite(m.points[3 * v + k])) bad = std::min(bad, m.input_vertex_index(v));
+  if(bad != npos) throw Invalid_input("vertex " + std::to_string(bad) + " has a non-finite coordinate");
   for(std::size_t f = 0; f < m.nf; ++f)
   {
     const double *p = m.point(m.fv[3 * f]), *q = m.point(m.fv[3 * f + 1]), *r = m.point(m.fv[3 * f + 2]);
@@ -34,9 +36,9 @@ inline void check_geometry(const Mesh_tables& m)
     };
     const double l2 = std::max({squared_distance(p, q), squared_distance(p, r), squared_distance(q, r)});
     // a face is degenerate when its area is at round-off level of its size
-    if(!(2 * m.face_area(f) > 16 * DBL_EPSILON * l2))
-      throw Invalid_input("face " + std::to_string(f) + " has zero area (degenerate triangle)");
+    if(!(2 * m.face_area(f) > 16 * DBL_EPSILON * l2)) bad = std::min(bad, m.input_face_index(f));
   }
+  if(bad != npos) throw Invalid_input("face " + std::to_string(bad) + " has zero area (degenerate triangle)");
 }
 
 // Cotan weights per side (paper Eq. 6): the weight of side ij of face ijk is cot(angle at k) / 2.

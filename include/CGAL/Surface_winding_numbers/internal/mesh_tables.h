@@ -69,6 +69,13 @@ struct Mesh_tables
   std::vector<std::size_t> component_border_edges;
   std::vector<std::size_t> component_first_face;
 
+  // Index of every element in the input's numbering when the tables were renumbered
+  // (locality_order.h); empty when the tables keep it. Error messages name elements by it.
+  std::vector<std::size_t> input_vertex, input_edge, input_face;
+  std::size_t input_vertex_index(std::size_t v) const { return input_vertex.empty() ? v : input_vertex[v]; }
+  std::size_t input_edge_index(std::size_t e) const { return input_edge.empty() ? e : input_edge[e]; }
+  std::size_t input_face_index(std::size_t f) const { return input_face.empty() ? f : input_face[f]; }
+
   static std::size_t face_of(std::size_t corner_or_side) { return corner_or_side / 3; }
   static std::size_t next_in_face(std::size_t c) { return 3 * (c / 3) + (c % 3 + 1) % 3; }
   static std::size_t prev_in_face(std::size_t c) { return 3 * (c / 3) + (c % 3 + 2) % 3; }
@@ -147,8 +154,8 @@ inline void finalize_mesh_tables(Mesh_tables& m)
     const std::size_t e = m.fe[s], a = m.tail(s), b = m.head(s);
     if(a == m.ev[2 * e] && b == m.ev[2 * e + 1]) m.fs[s] = 1;
     else if(b == m.ev[2 * e] && a == m.ev[2 * e + 1]) m.fs[s] = -1;
-    else throw Invalid_input("face " + std::to_string(s / 3) + ": side " + std::to_string(s % 3) +
-                           " does not match its edge " + std::to_string(e));
+    else throw Invalid_input("face " + std::to_string(m.input_face_index(s / 3)) + ": side " + std::to_string(s % 3) +
+                           " does not match its edge " + std::to_string(m.input_edge_index(e)));
   }
 
   // edge -> sides

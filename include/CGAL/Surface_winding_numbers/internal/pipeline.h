@@ -74,9 +74,10 @@ public:
     if(m_.nf == 0) throw Invalid_input("the mesh has no face");
     if(!m_.unpaired_edges.empty())
     {
-      const std::size_t e = m_.unpaired_edges.front();
-      throw Invalid_input("edge " + std::to_string(e) + " (vertices " + std::to_string(m_.ev[2 * e]) + ", " +
-                          std::to_string(m_.ev[2 * e + 1]) + ") is nonmanifold or joins faces of opposite orientation");
+      std::size_t e = m_.unpaired_edges.front();
+      for(std::size_t x : m_.unpaired_edges)
+        if(m_.input_edge_index(x) < m_.input_edge_index(e)) e = x;
+      throw Invalid_input("edge " + edge_name(e) + " is nonmanifold or joins faces of opposite orientation");
     }
     check_geometry(m_);
     clamped_weights_ = cotan_weights(m_, weight_);
@@ -84,6 +85,13 @@ public:
   }
 
   const Mesh_tables& tables() const { return m_; }
+
+  // "N (vertices A, B)" in the input's numbering, for error messages
+  std::string edge_name(std::size_t e) const
+  {
+    return std::to_string(m_.input_edge_index(e)) + " (vertices " + std::to_string(m_.input_vertex_index(m_.ev[2 * e])) +
+           ", " + std::to_string(m_.input_vertex_index(m_.ev[2 * e + 1])) + ")";
+  }
   std::size_t clamped_weights() const { return clamped_weights_; }
 
   template <class LP>
@@ -96,16 +104,24 @@ public:
     Stopwatch clock, total;
     fill_mesh_report(rep);
     rep.curve_edges = 0;
+    std::size_t bad_value = npos, on_border = npos;   // first offending edges, in the input's numbering
     for(std::size_t e = 0; e < m_.ne; ++e)
     {
-      if(!std::isfinite(chain[e])) throw Invalid_input("edge " + std::to_string(e) + " has a non-finite chain value");
+      if(!std::isfinite(chain[e]))
+      {
+        if(bad_value == npos || m_.input_edge_index(e) < m_.input_edge_index(bad_value)) bad_value = e;
+        continue;
+      }
       if(std::abs(chain[e]) <= chain_tolerance) continue;
       ++rep.curve_edges;
-      if(m_.edge_arc[e] == npos)
-        throw Invalid_input("edge " + std::to_string(e) + " (vertices " + std::to_string(m_.ev[2 * e]) + ", " +
-                            std::to_string(m_.ev[2 * e + 1]) + ") is on the border of the mesh and carries the chain value " +
-                            std::to_string(chain[e]) + ": curves may end on the border but not run along it");
+      if(m_.edge_arc[e] == npos && (on_border == npos || m_.input_edge_index(e) < m_.input_edge_index(on_border)))
+        on_border = e;
     }
+    if(bad_value != npos)
+      throw Invalid_input("edge " + std::to_string(m_.input_edge_index(bad_value)) + " has a non-finite chain value");
+    if(on_border != npos)
+      throw Invalid_input("edge " + edge_name(on_border) + " is on the border of the mesh and carries the chain value " +
+                          std::to_string(chain[on_border]) + ": curves may end on the border but not run along it");
     const std::vector<char> endpoint = interior_endpoints(m_, chain);
     rep.interior_endpoints = 0;
     for(char c : endpoint) rep.interior_endpoints += c ? 1 : 0;
