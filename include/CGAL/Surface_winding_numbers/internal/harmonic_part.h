@@ -41,16 +41,22 @@ public:
     n_ = n;
     la_.reset(new LA());
     if(n == 0) { m_ = &m; return; }
+    // diagonal entries summed per face first, so that every matrix entry is added once
+    std::vector<double> diagonal(n, 0.);
     A_.reset(new Matrix(static_cast<int>(n), static_cast<int>(n)));
     for(std::size_t e = 0; e < m.ne; ++e)
       for(std::size_t i = m.edge_side_begin[e]; i < m.edge_side_begin[e + 1]; ++i)
+      {
+        const std::size_t s = m.edge_sides[i], fi = dof_[s / 3];
+        if(fi == npos) continue;
+        diagonal[fi] += 1 / star[e];
         for(std::size_t j = m.edge_side_begin[e]; j < m.edge_side_begin[e + 1]; ++j)
         {
-          const std::size_t s = m.edge_sides[i], t = m.edge_sides[j];
-          const std::size_t fi = dof_[s / 3], fj = dof_[t / 3];
-          if(fi == npos || fj == npos) continue;
-          A_->add_coef(fi, fj, m.fs[s] * m.fs[t] / star[e]);
+          const std::size_t t = m.edge_sides[j], fj = dof_[t / 3];
+          if(j != i && fj != npos) A_->add_coef(fi, fj, m.fs[s] * m.fs[t] / star[e]);
         }
+      }
+    for(std::size_t k = 0; k < n; ++k) A_->add_coef(k, k, diagonal[k]);
     double D = 1;
     if(!la_->factor(*A_, D)) throw Solver_failure("factorization of the 2-form Laplacian failed");
     m_ = &m;

@@ -121,16 +121,21 @@ public:
     n_ = n;
     la_.reset(new LA());
     if(n == 0) return;
-    A_.reset(new Matrix(static_cast<int>(n), static_cast<int>(n)));
+    // the side weights summed per edge first, so that every matrix entry is added once
+    std::vector<double> edge_weight(m.ne, 0.), diagonal(n, 0.);
     for(std::size_t s = 0; s < 3 * m.nf; ++s)
+      if(!excluded[m.tail(s)] && !excluded[m.head(s)]) edge_weight[m.fe[s]] += weight[s];
+    A_.reset(new Matrix(static_cast<int>(n), static_cast<int>(n)));
+    for(std::size_t e = 0; e < m.ne; ++e)
     {
-      const std::size_t i = dof_[m.tail(s)], j = dof_[m.head(s)];
-      const double w = weight[s];
-      if(excluded[m.tail(s)] || excluded[m.head(s)]) continue;
-      if(i != npos) A_->add_coef(i, i, w);
-      if(j != npos) A_->add_coef(j, j, w);
+      const double w = edge_weight[e];
+      if(w == 0) continue;   // no side with both ends in V*
+      const std::size_t i = dof_[m.ev[2 * e]], j = dof_[m.ev[2 * e + 1]];
+      if(i != npos) diagonal[i] += w;
+      if(j != npos) diagonal[j] += w;
       if(i != npos && j != npos) { A_->add_coef(i, j, -w); A_->add_coef(j, i, -w); }
     }
+    for(std::size_t k = 0; k < n; ++k) A_->add_coef(k, k, diagonal[k]);
     double D = 1;
     if(!la_->factor(*A_, D)) throw Solver_failure("factorization of the jump Laplacian failed");
   }
