@@ -99,7 +99,8 @@ typedef Eigen_LDLT_sparse_solver Default_sparse_solver;
 
 \brief computes surface winding numbers for many curves on one triangle mesh.
 
-The constructor extracts the mesh into flat index tables, checks it (triangles only, finite
+The constructor extracts the mesh into flat index tables (numbered for memory locality; results and
+error messages use the mesh's own order), checks it (triangles only, finite
 coordinates, no zero-area face) and computes the cotan weights. The 2-form Laplacian used by the
 Hodge projection is factorized the first time a curve with interior endpoints needs it and then
 kept. The jump Laplacian depends on the curve's endpoints: it is factorized once per `solve()` and
