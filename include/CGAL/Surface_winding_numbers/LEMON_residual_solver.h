@@ -972,6 +972,7 @@ private:
     ++stats_.certificates;
     typedef internal::Warm_push_relabel<Int> Push_relabel;
     typename Push_relabel::Outcome outcome = Push_relabel::OVER_BUDGET;
+    const auto t_pr = std::chrono::steady_clock::now();
     if(push_relabel_budget_ != 0)
     {
       Push_relabel pr(n);
@@ -991,7 +992,11 @@ private:
     if(outcome == Push_relabel::OVER_BUDGET)
     {
       if(push_relabel_budget_ != 0) ++stats_.max_flow_fallbacks;
+      const auto t_bk = std::chrono::steady_clock::now();
       balanced = boykov_kolmogorov(lv, lower, upper, x0, barrier);
+      if(verbose_)
+        std::cerr << "[swn] multilevel: push-relabel over budget after " << std::chrono::duration<double>(t_bk - t_pr).count()
+                  << " s, Boykov-Kolmogorov " << seconds(t_bk) << " s\n";
     }
     lv.x = x0;
     if(!balanced) return false;
