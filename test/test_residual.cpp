@@ -393,7 +393,7 @@ TEST(LemonResidual, MultilevelMaxFlowAlgorithmsAgree)
 // internal::Warm_push_relabel on random networks with scattered excesses and deficits: the flow it
 // moves is a maximum flow (the value of internal::Boykov_kolmogorov_flow, Boost's, from scratch), stays within the
 // capacities and conserves every imbalance it does not absorb; on a cut, no residual arc leaves
-// the source side and every excess left is on it.
+// the source side and every excess left is on it. The same checks hold for Boykov-Kolmogorov's flow.
 TEST(LemonResidual, WarmPushRelabelIsAMaximumFlow)
 {
   typedef long long Int;
@@ -447,6 +447,34 @@ TEST(LemonResidual, WarmPushRelabelIsAMaximumFlow)
     for(std::size_t v = 0; v < n; ++v) bk.set_terminal(v, b[v]);
     EXPECT_EQ(bk.run(), outcome == PR::BALANCED) << "seed " << seed;
     EXPECT_EQ(value, bk.value()) << "seed " << seed;
+    {
+      // Boykov-Kolmogorov's own flow: within the capacities, conserving what it does not absorb,
+      // moving bk.value(), and saturating the arcs that leave its source side
+      std::vector<Int> bk_left = b;
+      for(std::size_t i = 0; i < m; ++i)
+      {
+        const Int f = bk.flow(i);
+        EXPECT_LE(f, cap[i]) << "seed " << seed;
+        EXPECT_GE(f, -back[i]) << "seed " << seed;
+        bk_left[tail[i]] -= f;
+        bk_left[head[i]] += f;
+      }
+      Int bk_value = 0;
+      for(std::size_t v = 0; v < n; ++v)
+      {
+        if(b[v] >= 0) EXPECT_GE(bk_left[v], 0) << "seed " << seed;
+        if(b[v] <= 0) { EXPECT_LE(bk_left[v], 0) << "seed " << seed; EXPECT_GE(bk_left[v], b[v]) << "seed " << seed; }
+        if(b[v] == 0) EXPECT_EQ(bk_left[v], 0) << "seed " << seed;
+        if(b[v] < 0) bk_value += bk_left[v] - b[v];
+        if(bk_left[v] > 0) EXPECT_TRUE(bk.source_side(v)) << "seed " << seed;
+      }
+      EXPECT_EQ(bk_value, bk.value()) << "seed " << seed;
+      for(std::size_t i = 0; i < m; ++i)
+      {
+        if(bk.source_side(tail[i]) && !bk.source_side(head[i])) EXPECT_EQ(bk.flow(i), cap[i]) << "seed " << seed;
+        if(bk.source_side(head[i]) && !bk.source_side(tail[i])) EXPECT_EQ(bk.flow(i), -back[i]) << "seed " << seed;
+      }
+    }
     if(outcome == PR::BALANCED)
     {
       ++balanced;

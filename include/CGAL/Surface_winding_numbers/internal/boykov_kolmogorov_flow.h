@@ -4,10 +4,12 @@
 #ifndef CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_BOYKOV_KOLMOGOROV_FLOW_H
 #define CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_BOYKOV_KOLMOGOROV_FLOW_H
 
-#include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/boykov_kolmogorov_max_flow.hpp>
+#include <boost/graph/compressed_sparse_row_graph.hpp>
+#include <boost/property_map/property_map.hpp>
 
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -17,22 +19,19 @@ namespace internal {
 // Boost.Graph's Boykov-Kolmogorov maximum flow behind the interface of Warm_push_relabel: arcs with
 // residual capacities both ways, a signed terminal capacity per node (> 0: from the source, < 0: to
 // the sink), run(), the flow of each arc and the source side of a minimum cut.
+// The graph is a compressed sparse row graph with its edge data in flat arrays: with an
+// adjacency_list, every edge's properties were a heap block of their own, and on the 1.15M-face
+// certificate of benchmark/residual_solvers.md the flow spent most of its time missing the cache.
 template <typename Int>
 class Boykov_kolmogorov_flow
 {
-  typedef boost::adjacency_list_traits<boost::vecS, boost::vecS, boost::directedS> Traits;
-  typedef boost::adjacency_list<boost::vecS, boost::vecS, boost::directedS,
-    boost::property<boost::vertex_color_t, boost::default_color_type,
-    boost::property<boost::vertex_predecessor_t, Traits::edge_descriptor,
-    boost::property<boost::vertex_distance_t, long>>>,
-    boost::property<boost::edge_capacity_t, Int,
-    boost::property<boost::edge_residual_capacity_t, Int,
-    boost::property<boost::edge_reverse_t, Traits::edge_descriptor>>>> Graph;
+  typedef boost::compressed_sparse_row_graph<boost::directedS, boost::no_property, boost::no_property,
+                                             boost::no_property, std::size_t, std::size_t> Graph;
   typedef typename boost::graph_traits<Graph>::edge_descriptor Edge;
 
 public:
   // n nodes (the source and the sink are two more)
-  explicit Boykov_kolmogorov_flow(std::size_t n) : n_(n), g_(n + 2) {}
+  explicit Boykov_kolmogorov_flow(std::size_t n) : n_(n) {}
 
   // an arc u -> v with residual capacities c_uv (u -> v) and c_vu (v -> u); its net flow u -> v is
   // flow(i) after run(), i being the number of arcs added before it
@@ -48,35 +47,71 @@ public:
   // runs the maximum flow; true if it uses up every capacity from the source
   bool run()
   {
-    value_ = boost::boykov_kolmogorov_max_flow(g_, n_, n_ + 1);
-    for(const Edge& e : sources_)
-      if(get(boost::edge_residual_capacity, g_, e) != 0) return false;
+    // half-edges h (h ^ 1 is the reverse of h) sorted by tail: half h is edge position_[h] of the graph
+    const std::size_t nh = tail_.size(), nv = n_ + 2;
+    std::vector<std::size_t> fill(nv + 1, 0);
+    for(std::size_t h = 0; h < nh; ++h) ++fill[tail_[h] + 1];
+    for(std::size_t v = 0; v < nv; ++v) fill[v + 1] += fill[v];
+    position_.resize(nh);
+    std::vector<std::pair<std::size_t, std::size_t>> sorted(nh);
+    for(std::size_t h = 0; h < nh; ++h)
+    {
+      position_[h] = fill[tail_[h]]++;
+      sorted[position_[h]] = std::make_pair(tail_[h], tail_[h ^ 1]);
+    }
+    Graph g(boost::edges_are_sorted, sorted.begin(), sorted.end(), nv);
+    std::vector<std::pair<std::size_t, std::size_t>>().swap(sorted);
+    std::vector<Edge> edge_at(nh);
+    for(Edge e : boost::make_iterator_range(edges(g))) edge_at[get(boost::edge_index, g, e)] = e;
+    std::vector<Int> capacity(nh);
+    std::vector<Edge> reverse(nh);
+    for(std::size_t h = 0; h < nh; ++h)
+    {
+      capacity[position_[h]] = cap_[h];
+      reverse[position_[h]] = edge_at[position_[h ^ 1]];
+    }
+    residual_.assign(nh, Int(0));
+    color_.assign(nv, boost::white_color);
+    std::vector<Edge> predecessor(nv);
+    std::vector<long> distance(nv, 0);
+    const auto edge_index = get(boost::edge_index, g);
+    const auto vertex_index = get(boost::vertex_index, g);
+    value_ = boost::boykov_kolmogorov_max_flow(
+      g, boost::make_iterator_property_map(capacity.begin(), edge_index),
+      boost::make_iterator_property_map(residual_.begin(), edge_index),
+      boost::make_iterator_property_map(reverse.begin(), edge_index),
+      boost::make_iterator_property_map(predecessor.begin(), vertex_index),
+      boost::make_iterator_property_map(color_.begin(), vertex_index),
+      boost::make_iterator_property_map(distance.begin(), vertex_index), vertex_index, n_, n_ + 1);
+    for(std::size_t h : sources_)
+      if(residual_[position_[h]] != 0) return false;
     return true;
   }
 
   // the value of the maximum flow (after run())
   Int value() const { return value_; }
   // net flow u -> v on arc i (after run())
-  Int flow(std::size_t i) const
-  {
-    return get(boost::edge_capacity, g_, arcs_[i]) - get(boost::edge_residual_capacity, g_, arcs_[i]);
-  }
+  Int flow(std::size_t i) const { return cap_[arcs_[i]] - residual_[position_[arcs_[i]]]; }
   // after run(): true if v can be reached from the source in the residual graph (the source side of
   // a minimum cut)
-  bool source_side(std::size_t v) const { return get(boost::vertex_color, g_, v) == boost::black_color; }
+  bool source_side(std::size_t v) const { return color_[v] == boost::black_color; }
 
 private:
-  Edge add(std::size_t u, std::size_t v, Int c, Int c_back)
+  // the half-edges u -> v (returned) and v -> u
+  std::size_t add(std::size_t u, std::size_t v, Int c, Int c_back)
   {
-    const Edge e = boost::add_edge(u, v, g_).first, r = boost::add_edge(v, u, g_).first;
-    put(boost::edge_capacity, g_, e, c); put(boost::edge_capacity, g_, r, c_back);
-    put(boost::edge_reverse, g_, e, r); put(boost::edge_reverse, g_, r, e);
-    return e;
+    const std::size_t h = tail_.size();
+    tail_.push_back(u);
+    tail_.push_back(v);
+    cap_.push_back(c);
+    cap_.push_back(c_back);
+    return h;
   }
 
   std::size_t n_;
-  Graph g_;
-  std::vector<Edge> arcs_, sources_;
+  std::vector<std::size_t> tail_, position_, arcs_, sources_;
+  std::vector<Int> cap_, residual_;
+  std::vector<boost::default_color_type> color_;
   Int value_ = 0;
 };
 
