@@ -125,26 +125,42 @@ TEST(MeshTables, TorusAndTwoComponents)
   EXPECT_EQ(s.report().border_loops, 1u);
 }
 
-TEST(MeshTables, LocalityNumberingIsABijectionAndKeepsTheMesh)
+namespace {
+// a copy of m with the same vertices (same indices) and its faces added in a shuffled order
+Mesh scrambled_copy(const Mesh& m, unsigned seed)
 {
-  // faces added in a scrambled order, plus an isolated vertex: the solver's tables are renumbered
-  // (locality_order.h) and must describe the same mesh through the solver's index maps
-  Mesh m;
-  std::vector<Vertex> vs = torus_mesh(m, 12, 8);
-  Mesh shuffled;
-  std::vector<Vertex> sv;
-  for(Vertex v : vs) sv.push_back(shuffled.add_vertex(m.point(v)));
+  Mesh s;
+  for(Vertex v : vertices(m)) s.add_vertex(m.point(v));
   std::vector<std::array<Vertex, 3>> tris;
   for(auto f : faces(m))
   {
     std::array<Vertex, 3> t;
     int k = 0;
-    for(Vertex v : vertices_around_face(halfedge(f, m), m)) t[k++] = sv[std::size_t(v)];
+    for(Vertex v : vertices_around_face(halfedge(f, m), m)) t[k++] = v;
     tris.push_back(t);
   }
-  std::mt19937 rng(7);
+  std::mt19937 rng(seed);
   std::shuffle(tris.begin(), tris.end(), rng);
-  for(const auto& t : tris) shuffled.add_face(t[0], t[1], t[2]);
+  for(const auto& t : tris) s.add_face(t[0], t[1], t[2]);
+  return s;
+}
+
+// marks slot i of a numbering of size n as used; false if it is out of range or used twice
+bool take_slot(std::vector<char>& seen, std::size_t i)
+{
+  if(i >= seen.size() || seen[i]) return false;
+  seen[i] = 1;
+  return true;
+}
+} // namespace
+
+TEST(MeshTables, LocalityNumberingIsABijectionAndKeepsTheMesh)
+{
+  // faces added in a scrambled order, plus an isolated vertex: the solver's tables are renumbered
+  // (locality_order.h) and must describe the same mesh through the solver's index maps
+  Mesh m;
+  torus_mesh(m, 12, 8);
+  Mesh shuffled = scrambled_copy(m, 7);
   const Vertex lonely = shuffled.add_vertex(K::Point_3(9, 9, 9));
   SWN::Surface_winding_numbers_solver<Mesh> s(shuffled);
   ASSERT_TRUE(s.is_valid()) << s.report().error;
@@ -157,9 +173,7 @@ TEST(MeshTables, LocalityNumberingIsABijectionAndKeepsTheMesh)
   for(Vertex v : vertices(shuffled))
   {
     const std::size_t i = s.vertex_index(v);
-    ASSERT_LT(i, t.nv);
-    EXPECT_FALSE(seen_v[i]);
-    seen_v[i] = 1;
+    ASSERT_TRUE(take_slot(seen_v, i));
     EXPECT_EQ(t.input_vertex_index(i), std::size_t(v));
     EXPECT_EQ(t.point(i)[0], shuffled.point(v).x());
     EXPECT_EQ(t.point(i)[2], shuffled.point(v).z());
@@ -169,9 +183,7 @@ TEST(MeshTables, LocalityNumberingIsABijectionAndKeepsTheMesh)
   for(auto e : edges(shuffled))
   {
     const std::size_t i = s.edge_index(e);
-    ASSERT_LT(i, t.ne);
-    EXPECT_FALSE(seen_e[i]);
-    seen_e[i] = 1;
+    ASSERT_TRUE(take_slot(seen_e, i));
     EXPECT_EQ(t.input_edge_index(i), std::size_t(e));
     EXPECT_EQ(t.ev[2 * i], s.vertex_index(source(halfedge(e, shuffled), shuffled)));   // reference direction kept
     EXPECT_EQ(t.ev[2 * i + 1], s.vertex_index(target(halfedge(e, shuffled), shuffled)));
@@ -179,9 +191,7 @@ TEST(MeshTables, LocalityNumberingIsABijectionAndKeepsTheMesh)
   for(auto f : faces(shuffled))
   {
     const std::size_t i = s.face_index(f);
-    ASSERT_LT(i, t.nf);
-    EXPECT_FALSE(seen_f[i]);
-    seen_f[i] = 1;
+    ASSERT_TRUE(take_slot(seen_f, i));
     EXPECT_EQ(t.input_face_index(i), std::size_t(f));
     auto h = halfedge(f, shuffled);
     for(std::size_t k = 0; k < 3; ++k, h = next(h, shuffled))   // corner order kept
@@ -202,20 +212,8 @@ TEST(MeshTables, ErrorsNameElementsInTheInputNumbering)
   for(int pass = 0; pass < 2; ++pass)
   {
     Mesh m;
-    std::vector<Vertex> vs = grid_disk(m, 10, 3, 0.);
-    Mesh s;
-    for(Vertex v : vs) s.add_vertex(m.point(v));
-    std::vector<std::array<Vertex, 3>> tris;
-    for(auto f : faces(m))
-    {
-      std::array<Vertex, 3> t;
-      int k = 0;
-      for(Vertex v : vertices_around_face(halfedge(f, m), m)) t[k++] = v;
-      tris.push_back(t);
-    }
-    std::mt19937 rng(11);
-    std::shuffle(tris.begin(), tris.end(), rng);
-    for(const auto& t : tris) s.add_face(t[0], t[1], t[2]);
+    grid_disk(m, 10, 3, 0.);
+    Mesh s = scrambled_copy(m, 11);
     std::string expected;
     if(pass == 0)
     {
