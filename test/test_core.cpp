@@ -159,7 +159,7 @@ TEST(MeshTables, LocalityNumberingIsABijectionAndKeepsTheMesh)
   // faces added in a scrambled order, plus an isolated vertex: the solver's tables are renumbered
   // (locality_order.h) and must describe the same mesh through the solver's index maps
   Mesh m;
-  torus_mesh(m, 12, 8);
+  torus_mesh(m, 48, 32);
   Mesh shuffled = scrambled_copy(m, 7);
   const Vertex lonely = shuffled.add_vertex(K::Point_3(9, 9, 9));
   SWN::Surface_winding_numbers_solver<Mesh> s(shuffled);
@@ -205,6 +205,28 @@ TEST(MeshTables, LocalityNumberingIsABijectionAndKeepsTheMesh)
   EXPECT_EQ(t.arcs.size(), t.ne);
 }
 
+TEST(MeshTables, CoherentNumberingIsKeptAndScatteredOneReplaced)
+{
+  // a grid written row by row is numbered coherently: the tables keep the mesh's order; the same
+  // grid with its faces shuffled is scattered and gets renumbered
+  Mesh m;
+  grid_disk(m, 40);
+  SWN::Surface_winding_numbers_solver<Mesh> coherent(m);
+  ASSERT_TRUE(coherent.is_valid());
+  EXPECT_TRUE(coherent.tables().input_face.empty());
+  for(auto f : faces(m)) EXPECT_EQ(coherent.face_index(f), std::size_t(f));
+  for(auto v : vertices(m)) EXPECT_EQ(coherent.vertex_index(v), std::size_t(v));
+  EXPECT_FALSE(SI::numbering_is_scattered(coherent.tables()));
+  Mesh s = scrambled_copy(m, 5);
+  SWN::Surface_winding_numbers_solver<Mesh> scattered(s);
+  ASSERT_TRUE(scattered.is_valid());
+  EXPECT_EQ(scattered.tables().input_face.size(), num_faces(s));
+  EXPECT_FALSE(SI::numbering_is_scattered(scattered.tables()));   // renumbered: coherent now
+  std::size_t moved = 0;
+  for(auto f : faces(s)) moved += scattered.face_index(f) != std::size_t(f) ? 1 : 0;
+  EXPECT_GT(moved, num_faces(s) / 2);
+}
+
 TEST(MeshTables, ErrorsNameElementsInTheInputNumbering)
 {
   // the same scrambled grid with one face made degenerate, then one vertex made non-finite: the
@@ -212,7 +234,7 @@ TEST(MeshTables, ErrorsNameElementsInTheInputNumbering)
   for(int pass = 0; pass < 2; ++pass)
   {
     Mesh m;
-    grid_disk(m, 10, 3, 0.);
+    grid_disk(m, 40, 3, 0.);
     Mesh s = scrambled_copy(m, 11);
     std::string expected;
     if(pass == 0)

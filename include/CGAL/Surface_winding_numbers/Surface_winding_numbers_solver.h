@@ -99,8 +99,8 @@ typedef Eigen_LDLT_sparse_solver Default_sparse_solver;
 
 \brief computes surface winding numbers for many curves on one triangle mesh.
 
-The constructor extracts the mesh into flat index tables (numbered for memory locality; results and
-error messages use the mesh's own order), checks it (triangles only, finite
+The constructor extracts the mesh into flat index tables (renumbered for memory locality when the
+mesh's own numbering is scattered; results and error messages use the mesh's own order), checks it (triangles only, finite
 coordinates, no zero-area face) and computes the cotan weights. The 2-form Laplacian used by the
 Hodge projection is factorized the first time a curve with interior endpoints needs it and then
 kept. The jump Laplacian depends on the curve's endpoints: it is factorized once per `solve()` and
@@ -297,7 +297,12 @@ private:
     }
     m.nf = i;
     if(m.nf == 0) throw Invalid_input("the mesh has no face");
-    // the core works in a cache-friendly numbering; the index maps follow it
+    // a scattered numbering is replaced by a cache-friendly one, which the index maps follow
+    if(!internal::numbering_is_scattered(m))
+    {
+      internal::finalize_mesh_tables(m);
+      return m;
+    }
     const internal::Table_numbering n = internal::locality_numbering(m);
     for(vertex_descriptor v : vertices(tm_)) put(vim_, v, n.vertex[get(vim_, v)]);
     for(edge_descriptor e : edges(tm_)) put(eim_, e, n.edge[get(eim_, e)]);

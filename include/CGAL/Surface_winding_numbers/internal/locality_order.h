@@ -6,7 +6,8 @@
 // its maximum flows); with the numbering a mesh file happens to have (remeshers and editors leave
 // it close to random) nearly every such read is a cache miss. Faces are renumbered along a Morton
 // (Z-order) curve through their centroids, vertices and edges in the order those faces first use
-// them, so that elements close on the surface are close in memory. Measured in
+// them, so that elements close on the surface are close in memory; applied when the input's own
+// numbering is scattered (numbering_is_scattered()). Measured in
 // benchmark/RESULTS.md (Speed, 2026-12-02): the residual summed over the benchmark's cases with handles
 // 87 -> 68 s, the 1.15M-face genus-10 case 134 -> 96 s.
 
@@ -97,6 +98,27 @@ inline Table_numbering locality_numbering(const Mesh_tables& m)
   for(std::size_t& x : n.vertex) if(x == npos) x = nv++;
   for(std::size_t& x : n.edge) if(x == npos) x = ne++;
   return n;
+}
+
+// True when the numbering of m's faces is scattered: fewer than one in eight of the edges between two
+// faces join faces at most 32 positions apart. Remeshers and editors leave such numberings (the
+// benchmark's meshes: 6-8 %); meshes written by a generator or a subdivision scheme are coherent
+// already (the authors' DoubleTorusWithLoops and torus: 22 % and 17 %), and are better left as they
+// are: the multilevel residual solver's work depends on the numbering, and on those meshes it was
+// 10-25 % faster in their own order than in Morton order (benchmark/RESULTS.md, Speed, 2026-12-02).
+// Needs fe and nf (the side -> edge table).
+inline bool numbering_is_scattered(const Mesh_tables& m)
+{
+  std::vector<std::size_t> first_face(m.ne, npos);
+  std::size_t pairs = 0, near = 0;
+  for(std::size_t s = 0; s < 3 * m.nf; ++s)
+  {
+    const std::size_t e = m.fe[s], f = s / 3;
+    if(first_face[e] == npos) { first_face[e] = f; continue; }
+    ++pairs;
+    if(f - first_face[e] <= 32) ++near;   // sides are visited in face order: f >= first_face[e]
+  }
+  return 8 * near < pairs;
 }
 
 // The tables of m with its elements renumbered by n (points, fv, fe, ev moved, then finalized).
