@@ -1475,6 +1475,10 @@ void permutation_case(const Soup& base, const Soup_chain& c, unsigned pseed)
   for(const auto& kv : c) add_segment(pc, p.new_vertex[kv.first.first], p.new_vertex[kv.first.second], kv.second);
   auto m0 = make_mesh<TM>(base);
   auto m1 = make_mesh<TM>(p.soup);
+  // the generated mesh is numbered coherently and keeps its order in the solver's tables; the permuted
+  // one is scattered and renumbered (locality_order.h), so both paths are compared below
+  EXPECT_TRUE(SWN::Surface_winding_numbers_solver<TM>(m0->tm).tables().input_face.empty());
+  EXPECT_FALSE(SWN::Surface_winding_numbers_solver<TM>(m1->tm).tables().input_face.empty());
   Outcome o0 = run(*m0, c), o1 = run(*m1, pc);
   check_common(o0);
   check_common(o1);
