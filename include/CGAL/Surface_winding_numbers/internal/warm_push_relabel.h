@@ -65,18 +65,17 @@ public:
     const Index dead = Index(n_);
     label_.assign(n_, 0);
     current_.assign(first_.begin(), first_.end() - 1);
-    bucket_.assign(n_, std::vector<Index>());
+    bucket_.assign(n_, NONE);
+    next_.assign(n_, NONE);
     global_relabel();
     // global relabeling after about as much work as a few sweeps over the graph
     const std::size_t relabel_period = 6 * n_ + first_[n_] / 2;
     std::size_t work = 0, total = 0;
     while(highest_ != NONE)
     {
-      std::vector<Index>& B = bucket_[highest_];
-      if(B.empty()) { highest_ = highest_ == 0 ? NONE : highest_ - 1; continue; }
-      const Index v = B.back();
-      B.pop_back();
-      if(b_[v] <= 0 || label_[v] != highest_) continue;   // stale entry
+      const Index v = bucket_[highest_];
+      if(v == NONE) { highest_ = highest_ == 0 ? NONE : highest_ - 1; continue; }
+      bucket_[highest_] = next_[v];
       const std::size_t w = discharge(v);
       work += w;
       total += w;
@@ -119,9 +118,12 @@ private:
     std::vector<Index>().swap(tail_);
   }
 
+  // an active node is in exactly one bucket (its label's): labels change only in discharge(), which
+  // pops the node first, and in global_relabel(), which rebuilds the buckets
   void activate(Index v)
   {
-    bucket_[label_[v]].push_back(v);
+    next_[v] = bucket_[label_[v]];
+    bucket_[label_[v]] = v;
     if(highest_ == NONE || label_[v] > highest_) highest_ = label_[v];
   }
 
@@ -146,7 +148,7 @@ private:
         queue_.push_back(u);
       }
     }
-    for(std::vector<Index>& B : bucket_) B.clear();
+    std::fill(bucket_.begin(), bucket_.end(), NONE);
     highest_ = NONE;
     for(std::size_t v = 0; v < n_; ++v)
     {
@@ -197,7 +199,7 @@ private:
   std::vector<Int> b_, r_, cap0_;
   std::vector<Index> tail_, head_, first_, out_;
   std::vector<Index> label_, current_, queue_;
-  std::vector<std::vector<Index>> bucket_;
+  std::vector<Index> bucket_, next_;   // active nodes per label, as singly linked stacks
   Index highest_ = NONE;
 };
 
