@@ -264,6 +264,39 @@ TEST(MeshTables, ErrorsNameElementsInTheInputNumbering)
   }
 }
 
+TEST(MeshTables, ChainErrorsNameEdgesInTheInputNumbering)
+{
+  // a chain on two border edges of a renumbered (scrambled) grid: the message names the one that
+  // comes first in edges(tm), with its own vertex indices
+  Mesh m;
+  grid_disk(m, 40, 3, 0.);
+  Mesh s = scrambled_copy(m, 13);
+  SWN::Surface_winding_numbers_solver<Mesh> solver(s);
+  ASSERT_TRUE(solver.is_valid());
+  ASSERT_FALSE(solver.tables().input_edge.empty());
+  auto chain = get(CGAL::dynamic_edge_property_t<int>(), s);
+  std::vector<Mesh::Edge_index> border;
+  for(auto e : edges(s))
+  {
+    put(chain, e, 0);
+    if(is_border(e, s)) border.push_back(e);
+  }
+  // two border edges whose order in the solver's tables is the reverse of their order in edges(tm)
+  std::size_t j = 1;
+  while(j < border.size() && solver.edge_index(border[j]) > solver.edge_index(border[0])) ++j;
+  ASSERT_LT(j, border.size());
+  const Mesh::Edge_index first = border[0], later = border[j];
+  put(chain, later, 1);
+  put(chain, first, 1);
+  auto labels = get(CGAL::dynamic_face_property_t<int>(), s);
+  EXPECT_FALSE(solver.solve(chain, labels));
+  const auto h = halfedge(first, s);
+  const std::string expected = "edge " + std::to_string(std::size_t(first)) + " (vertices " +
+                               std::to_string(std::size_t(source(h, s))) + ", " +
+                               std::to_string(std::size_t(target(h, s))) + ") is on the border";
+  EXPECT_NE(solver.report().error.find(expected), std::string::npos) << solver.report().error;
+}
+
 TEST(CotanWeights, ValuesClampAndScaleInvariance)
 {
   SI::Mesh_tables t;

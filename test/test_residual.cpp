@@ -423,16 +423,31 @@ TEST(LemonResidual, WarmPushRelabelIsAMaximumFlow)
     for(std::size_t v = 0; v < n; ++v) pr.set_terminal(v, b[v]);
     const PR::Outcome outcome = pr.run();
     ASSERT_NE(outcome, PR::OVER_BUDGET);
+    // what a flow (push-relabel's or Boykov-Kolmogorov's) leaves at each node; its arcs stay within
+    // their capacities
+    auto left_by = [&](const auto& flow) {
+      std::vector<Int> left = b;
+      for(std::size_t i = 0; i < m; ++i)
+      {
+        const Int f = flow.flow(i);
+        EXPECT_LE(f, cap[i]) << "seed " << seed;
+        EXPECT_GE(f, -back[i]) << "seed " << seed;
+        left[tail[i]] -= f;
+        left[head[i]] += f;
+      }
+      return left;
+    };
+    // the arcs that cross a flow's cut are saturated away from its source side
+    auto expect_cut_saturated = [&](const auto& flow) {
+      for(std::size_t i = 0; i < m; ++i)
+      {
+        const Int f = flow.flow(i);
+        if(flow.source_side(tail[i]) && !flow.source_side(head[i])) EXPECT_EQ(f, cap[i]) << "seed " << seed;
+        if(flow.source_side(head[i]) && !flow.source_side(tail[i])) EXPECT_EQ(f, -back[i]) << "seed " << seed;
+      }
+    };
     // what is left at each node, and the value moved
-    std::vector<Int> left = b;
-    for(std::size_t i = 0; i < m; ++i)
-    {
-      const Int f = pr.flow(i);
-      EXPECT_LE(f, cap[i]) << "seed " << seed;
-      EXPECT_GE(f, -back[i]) << "seed " << seed;
-      left[tail[i]] -= f;
-      left[head[i]] += f;
-    }
+    const std::vector<Int> left = left_by(pr);
     // a node never sends more than it holds, so no node goes below its own deficit; the value is
     // what the deficits absorbed (excess left anywhere stays in the source side of the cut)
     Int total = 0, value = 0;
@@ -450,15 +465,7 @@ TEST(LemonResidual, WarmPushRelabelIsAMaximumFlow)
     {
       // Boykov-Kolmogorov's own flow: within the capacities, conserving what it does not absorb,
       // moving bk.value(), and saturating the arcs that leave its source side
-      std::vector<Int> bk_left = b;
-      for(std::size_t i = 0; i < m; ++i)
-      {
-        const Int f = bk.flow(i);
-        EXPECT_LE(f, cap[i]) << "seed " << seed;
-        EXPECT_GE(f, -back[i]) << "seed " << seed;
-        bk_left[tail[i]] -= f;
-        bk_left[head[i]] += f;
-      }
+      const std::vector<Int> bk_left = left_by(bk);
       Int bk_value = 0;
       for(std::size_t v = 0; v < n; ++v)
       {
@@ -469,11 +476,7 @@ TEST(LemonResidual, WarmPushRelabelIsAMaximumFlow)
         if(bk_left[v] > 0) EXPECT_TRUE(bk.source_side(v)) << "seed " << seed;
       }
       EXPECT_EQ(bk_value, bk.value()) << "seed " << seed;
-      for(std::size_t i = 0; i < m; ++i)
-      {
-        if(bk.source_side(tail[i]) && !bk.source_side(head[i])) EXPECT_EQ(bk.flow(i), cap[i]) << "seed " << seed;
-        if(bk.source_side(head[i]) && !bk.source_side(tail[i])) EXPECT_EQ(bk.flow(i), -back[i]) << "seed " << seed;
-      }
+      expect_cut_saturated(bk);
     }
     if(outcome == PR::BALANCED)
     {
@@ -489,12 +492,7 @@ TEST(LemonResidual, WarmPushRelabelIsAMaximumFlow)
       if(left[v] > 0) EXPECT_TRUE(pr.source_side(v)) << "seed " << seed;
       if(left[v] < 0) EXPECT_FALSE(pr.source_side(v)) << "seed " << seed;
     }
-    for(std::size_t i = 0; i < m; ++i)
-    {
-      const Int f = pr.flow(i);
-      if(pr.source_side(tail[i]) && !pr.source_side(head[i])) EXPECT_EQ(f, cap[i]) << "seed " << seed;
-      if(pr.source_side(head[i]) && !pr.source_side(tail[i])) EXPECT_EQ(f, -back[i]) << "seed " << seed;
-    }
+    expect_cut_saturated(pr);
   }
   EXPECT_GT(balanced, 10u);
   EXPECT_GT(cut, 10u);

@@ -75,6 +75,13 @@ struct Mesh_tables
   std::size_t input_vertex_index(std::size_t v) const { return input_vertex.empty() ? v : input_vertex[v]; }
   std::size_t input_edge_index(std::size_t e) const { return input_edge.empty() ? e : input_edge[e]; }
   std::size_t input_face_index(std::size_t f) const { return input_face.empty() ? f : input_face[f]; }
+  // of edges a and b (npos: none), the one that comes first in the input's numbering
+  std::size_t first_edge_in_input(std::size_t a, std::size_t b) const
+  {
+    if(a == npos) return b;
+    if(b == npos) return a;
+    return input_edge_index(b) < input_edge_index(a) ? b : a;
+  }
 
   static std::size_t face_of(std::size_t corner_or_side) { return corner_or_side / 3; }
   static std::size_t next_in_face(std::size_t c) { return 3 * (c / 3) + (c % 3 + 1) % 3; }

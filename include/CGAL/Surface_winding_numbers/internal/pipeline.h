@@ -74,9 +74,8 @@ public:
     if(m_.nf == 0) throw Invalid_input("the mesh has no face");
     if(!m_.unpaired_edges.empty())
     {
-      std::size_t e = m_.unpaired_edges.front();
-      for(std::size_t x : m_.unpaired_edges)
-        if(m_.input_edge_index(x) < m_.input_edge_index(e)) e = x;
+      std::size_t e = npos;
+      for(std::size_t x : m_.unpaired_edges) e = m_.first_edge_in_input(e, x);
       throw Invalid_input("edge " + edge_name(e) + " is nonmanifold or joins faces of opposite orientation");
     }
     check_geometry(m_);
@@ -109,13 +108,12 @@ public:
     {
       if(!std::isfinite(chain[e]))
       {
-        if(bad_value == npos || m_.input_edge_index(e) < m_.input_edge_index(bad_value)) bad_value = e;
+        bad_value = m_.first_edge_in_input(bad_value, e);
         continue;
       }
       if(std::abs(chain[e]) <= chain_tolerance) continue;
       ++rep.curve_edges;
-      if(m_.edge_arc[e] == npos && (on_border == npos || m_.input_edge_index(e) < m_.input_edge_index(on_border)))
-        on_border = e;
+      if(m_.edge_arc[e] == npos) on_border = m_.first_edge_in_input(on_border, e);
     }
     if(bad_value != npos)
       throw Invalid_input("edge " + std::to_string(m_.input_edge_index(bad_value)) + " has a non-finite chain value");
