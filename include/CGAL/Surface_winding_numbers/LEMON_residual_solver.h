@@ -134,7 +134,7 @@ public:
 
   The optimal shifts are constant over large regions and the jumps concentrate on a few curves (the
   completion of the curve and the nonbounding loops). `MULTILEVEL` builds a hierarchy of
-  contracted problems (clusters of up to 8 faces joined by free arcs without jump share one shift;
+  contracted problems (clusters of up to 16 faces joined by free arcs without jump share one shift;
   parallel arcs merge), solves the coarsest one (at most 2000 nodes) with `NETWORK_SIMPLEX`, and on
   each finer level re-solves only a band of nodes around the jumps of the coarser answer (every
   connected piece of the rest contracted to one node). The optimal flows of these network simplex
@@ -182,7 +182,7 @@ public:
   void set_verbose(bool b) { verbose_ = b; }
   /*!
   parameters of `MULTILEVEL`: the hierarchy stops at `coarsest_nodes` nodes (default 2000), clusters
-  have at most `cluster_size` nodes (default 8), bands reach `band_radius` arcs (default 6; twice that on the finest level) beyond
+  have at most `cluster_size` nodes (default 16), bands reach `band_radius` arcs (default 6; twice that on the finest level) beyond
   the jumps, and at most `max_refinements` bands (default 16) are re-solved on the finest level before
   the whole problem is handed to `NETWORK_SIMPLEX`. They change the running time, never the optimum.
   */
@@ -1212,7 +1212,7 @@ private:
   static constexpr int max_cost_exponent = 42;
 
   Algorithm algorithm_;
-  std::size_t coarsest_nodes_ = 2000, cluster_size_ = 8, max_refinements_ = 16;
+  std::size_t coarsest_nodes_ = 2000, cluster_size_ = 16, max_refinements_ = 16;
   int band_radius_ = 6;
   double push_relabel_budget_ = 200;
   bool fallback_ = false;
