@@ -1,6 +1,6 @@
 // Residual solvers (Eq. 11) on a real case: LEMON network flows vs GLPK's simplex.
 //
-//   residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--augment 0|1] [--scaling 0|1] [--simplex 0|1] [--multilevel 0|1] [--table 0|1] [--ml-radius R] [--ml-cluster C] [--ml-refinements N] [--mf-budget W] [--single-blas 0|1] [--verbose]
+//   residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--augment 0|1] [--scaling 0|1] [--simplex 0|1] [--multilevel 0|1] [--table 0|1] [--ml-radius R] [--ml-cluster C] [--ml-coarsest N] [--ml-refinements N] [--mf-budget W] [--single-blas 0|1] [--verbose]
 //
 // Reads the mesh and its curves like the swn tool (OBJ `l` lines and/or a curve file), cuts the mesh
 // so that the curves lie on edges, optionally subdivides it N times 1-to-4 at the edge midpoints
@@ -116,7 +116,8 @@ int main(int argc, char** argv)
 {
   std::string mesh_file, curve_file;
   bool run_glpk = true, run_whole = true, run_augment = true, run_scaling = true, run_simplex = true, run_cut = true, run_table = false, verbose = false;
-  int ml_radius = 6, ml_cluster = 8, ml_refinements = 16;
+  // the defaults of LEMON_residual_solver::set_multilevel_parameters()
+  int ml_radius = 6, ml_cluster = 16, ml_coarsest = 2000, ml_refinements = 16;
   bool single_blas = true;   // one OpenBLAS thread per call, as the swn tool
   double mf_budget = 200;
   int repeat = 3, subdivisions = 0;
@@ -134,6 +135,7 @@ int main(int argc, char** argv)
     else if(a == "--multilevel" && i + 1 < argc) run_cut = std::atoi(argv[++i]) != 0;
     else if(a == "--ml-radius" && i + 1 < argc) ml_radius = std::atoi(argv[++i]);
     else if(a == "--ml-cluster" && i + 1 < argc) ml_cluster = std::atoi(argv[++i]);
+    else if(a == "--ml-coarsest" && i + 1 < argc) ml_coarsest = std::atoi(argv[++i]);
     else if(a == "--ml-refinements" && i + 1 < argc) ml_refinements = std::atoi(argv[++i]);
     else if(a == "--mf-budget" && i + 1 < argc) mf_budget = std::atof(argv[++i]);
     else if(a == "--table" && i + 1 < argc) run_table = std::atoi(argv[++i]) != 0;
@@ -141,7 +143,7 @@ int main(int argc, char** argv)
     else if(a == "--verbose") verbose = true;
     else mesh_file = a;
   }
-  if(mesh_file.empty()) { std::fprintf(stderr, "usage: residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--augment 0|1] [--scaling 0|1] [--simplex 0|1] [--multilevel 0|1] [--table 0|1] [--ml-radius R] [--ml-cluster C] [--ml-refinements N] [--mf-budget W] [--single-blas 0|1] [--verbose]\n"); return 2; }
+  if(mesh_file.empty()) { std::fprintf(stderr, "usage: residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--augment 0|1] [--scaling 0|1] [--simplex 0|1] [--multilevel 0|1] [--table 0|1] [--ml-radius R] [--ml-cluster C] [--ml-coarsest N] [--ml-refinements N] [--mf-budget W] [--single-blas 0|1] [--verbose]\n"); return 2; }
   if(single_blas) CGAL::Surface_winding_numbers::use_single_threaded_openblas();
 
   Mesh input;
@@ -227,7 +229,7 @@ int main(int argc, char** argv)
   for(int k = 0; k < n_algorithms; ++k)
   {
     Lemon lemon(algorithms[k]);
-    lemon.set_multilevel_parameters(2000, std::size_t(ml_cluster), ml_radius, std::size_t(ml_refinements));
+    lemon.set_multilevel_parameters(std::size_t(ml_coarsest), std::size_t(ml_cluster), ml_radius, std::size_t(ml_refinements));
     lemon.set_max_flow_budget(mf_budget);
     lemon.set_fallback(false);
     lemon.set_verbose(verbose);
