@@ -19,6 +19,7 @@
 #include <map>
 #include <random>
 #include <string>
+#include <set>
 #include <vector>
 
 namespace {
@@ -754,6 +755,45 @@ TEST(LemonResidual, PipelineInstancesMatchGLPK)
     EXPECT_NEAR(o2, o, 1e-9 * (1 + o));
     EXPECT_GE(lemon.statistics().levels, 3u);
   }
+}
+
+// The hierarchy's parameters (coarsest size, cluster size, band radius) change how the multilevel
+// solver gets there, never where: on a pipeline instance (two tori, broken curves) every setting
+// certifies network simplex's optimum, through hierarchies of different depths.
+TEST(LemonResidual, MultilevelParametersChangeTheTimeNotTheOptimum)
+{
+  Mesh m;
+  auto vs = torus_mesh(m, 36, 16);
+  auto vs2 = torus_mesh(m, 24, 12, 1.2, 0.5, 5.);
+  auto curves = broken_curves(vs, 16, 4, 15);
+  for(auto& c : broken_curves(vs2, 12, 10, 3)) curves.push_back(c);
+  const SWN::Residual_problem P = pipeline_problem(m, curves);
+  Lemon reference(Lemon::NETWORK_SIMPLEX);
+  std::vector<double> sigma;
+  ASSERT_TRUE(reference.solve_residual(P, sigma)) << reference.error();
+  const double o = P.objective(sigma);
+  ASSERT_GT(o, 0.);
+  struct Setting { std::size_t coarsest, cluster; int radius; };
+  const Setting settings[] = {{12, 2, 0}, {12, 4, 1}, {12, 16, 6}, {12, 64, 2}, {50, 16, 0}, {2000, 16, 6}};
+  std::set<std::size_t> depths;
+  std::size_t refined = 0;
+  for(const Setting& s : settings)
+  {
+    const std::string what = "coarsest " + std::to_string(s.coarsest) + ", clusters of " + std::to_string(s.cluster) +
+                             ", radius " + std::to_string(s.radius);
+    Lemon lemon(Lemon::MULTILEVEL);
+    lemon.set_multilevel_parameters(s.coarsest, s.cluster, s.radius, 16);
+    ASSERT_TRUE(lemon.solve_residual(P, sigma)) << what << ": " << lemon.error();
+    EXPECT_LE(P.max_violation(sigma), 1e-9) << what;
+    EXPECT_NEAR(P.objective(sigma), o, 1e-9 * (1 + o)) << what;
+    EXPECT_TRUE(lemon.statistics().certified) << what;
+    EXPECT_FALSE(lemon.statistics().fallback) << what;   // certified by the hierarchy, not by a whole solve
+    depths.insert(lemon.statistics().levels);
+    refined += lemon.statistics().refinements > 0;
+  }
+  EXPECT_GE(depths.size(), 4u);   // the settings did build different hierarchies (1 to 10 levels when written)
+  EXPECT_GE(refined, 2u);         // and some were certified only after refinements around barriers
+  EXPECT_EQ(*depths.begin(), 1u);   // coarsest 2000: the problem is its own coarsest level
 }
 
 TEST(LemonResidual, WholeSolveGivesTheSameLabelsAsGLPK)
