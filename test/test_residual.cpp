@@ -18,8 +18,8 @@
 #include <limits>
 #include <map>
 #include <random>
-#include <string>
 #include <set>
+#include <string>
 #include <vector>
 
 namespace {
@@ -265,6 +265,18 @@ SWN::Residual_problem pipeline_problem(const Mesh& m, const std::vector<std::vec
   std::vector<double> chain(num_edges(m), 0.);
   for(auto e : edges(m)) chain[solver.edge_index(e)] = get(map, e);
   return solver.core().residual_problem_of(chain, epsilon);
+}
+
+// the pipeline's residual problem on two tori (36x16 and 24x12) with a broken meridian and a broken
+// loop on each: two components, fine enough for a multilevel hierarchy
+SWN::Residual_problem two_tori_problem()
+{
+  Mesh m;
+  auto vs = torus_mesh(m, 36, 16);
+  auto vs2 = torus_mesh(m, 24, 12, 1.2, 0.5, 5.);
+  auto curves = broken_curves(vs, 16, 4, 15);
+  for(auto& c : broken_curves(vs2, 12, 10, 3)) curves.push_back(c);
+  return pipeline_problem(m, curves);
 }
 
 } // namespace
@@ -737,13 +749,7 @@ TEST(LemonResidual, PipelineInstancesMatchGLPK)
   }
   {
     // finer torus, two broken curves, and a second torus: two components
-    Mesh m;
-    const int nu = 36, nv = 16;
-    auto vs = torus_mesh(m, nu, nv);
-    auto vs2 = torus_mesh(m, 24, 12, 1.2, 0.5, 5.);
-    auto curves = broken_curves(vs, nv, 4, 15);
-    for(auto& c : broken_curves(vs2, 12, 10, 3)) curves.push_back(c);
-    const SWN::Residual_problem P = pipeline_problem(m, curves);
+    const SWN::Residual_problem P = two_tori_problem();
     EXPECT_EQ(P.gauge_faces.size(), 2u);
     double o = 0;
     expect_matches_glpk(P, Lemon::COST_SCALING_PUSH, "two tori", &o);
@@ -762,12 +768,7 @@ TEST(LemonResidual, PipelineInstancesMatchGLPK)
 // certifies network simplex's optimum, through hierarchies of different depths.
 TEST(LemonResidual, MultilevelParametersChangeTheTimeNotTheOptimum)
 {
-  Mesh m;
-  auto vs = torus_mesh(m, 36, 16);
-  auto vs2 = torus_mesh(m, 24, 12, 1.2, 0.5, 5.);
-  auto curves = broken_curves(vs, 16, 4, 15);
-  for(auto& c : broken_curves(vs2, 12, 10, 3)) curves.push_back(c);
-  const SWN::Residual_problem P = pipeline_problem(m, curves);
+  const SWN::Residual_problem P = two_tori_problem();
   Lemon reference(Lemon::NETWORK_SIMPLEX);
   std::vector<double> sigma;
   ASSERT_TRUE(reference.solve_residual(P, sigma)) << reference.error();
