@@ -116,10 +116,12 @@ int main(int argc, char** argv)
 {
   std::string mesh_file, curve_file;
   bool run_glpk = true, run_whole = true, run_augment = true, run_scaling = true, run_simplex = true, run_cut = true, run_table = false, verbose = false;
-  // the defaults of LEMON_residual_solver::set_multilevel_parameters()
-  int ml_radius = 6, ml_cluster = 16, ml_coarsest = 2000, ml_refinements = 16;
+  // the library's defaults unless given
+  const Lemon defaults;
+  int ml_radius = defaults.band_radius(), ml_cluster = int(defaults.cluster_size()),
+      ml_coarsest = int(defaults.coarsest_nodes()), ml_refinements = int(defaults.max_refinements());
   bool single_blas = true;   // one OpenBLAS thread per call, as the swn tool
-  double mf_budget = 200;
+  double mf_budget = defaults.max_flow_budget();
   int repeat = 3, subdivisions = 0;
   for(int i = 1; i < argc; ++i)
   {

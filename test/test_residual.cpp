@@ -305,6 +305,15 @@ TEST(LemonResidual, NameAndDefaults)
   EXPECT_FALSE(l.statistics().fallback);
   EXPECT_TRUE(l.statistics().certified);
   EXPECT_GE(l.statistics().cost_exponent, 30);
+  // the parameters read back as set, clamped where the setter clamps
+  Lemon p;
+  p.set_multilevel_parameters(0, 1, -3, 5);
+  EXPECT_EQ(p.coarsest_nodes(), 1u);
+  EXPECT_EQ(p.cluster_size(), 2u);
+  EXPECT_EQ(p.band_radius(), 0);
+  EXPECT_EQ(p.max_refinements(), 5u);
+  p.set_max_flow_budget(-1.);
+  EXPECT_EQ(p.max_flow_budget(), -1.);
 }
 
 TEST(LemonResidual, RandomClosedProblemsMatchGLPK)

@@ -194,6 +194,14 @@ public:
     band_radius_ = (std::max)(0, band_radius);
     max_refinements_ = max_refinements;
   }
+  /// the parameters of `MULTILEVEL` (see `set_multilevel_parameters()`)
+  std::size_t coarsest_nodes() const { return coarsest_nodes_; }
+  /// \copydoc coarsest_nodes()
+  std::size_t cluster_size() const { return cluster_size_; }
+  /// \copydoc coarsest_nodes()
+  int band_radius() const { return band_radius_; }
+  /// \copydoc coarsest_nodes()
+  std::size_t max_refinements() const { return max_refinements_; }
   /*!
   work budget of the push-relabel maximum flow in the certificate of `MULTILEVEL`, in arc scans per
   node and arc of the level (default 200), capped at \f$ 2 \cdot 10^8 \f$ scans in all but never
@@ -204,6 +212,8 @@ public:
   value: no budget. Changes the running time, never the answer.
   */
   void set_max_flow_budget(double work_per_element) { push_relabel_budget_ = work_per_element; }
+  /// the work budget of the push-relabel maximum flow (see `set_max_flow_budget()`)
+  double max_flow_budget() const { return push_relabel_budget_; }
 
   /// why the last solve failed (empty after a success)
   const std::string& error() const { return error_; }
