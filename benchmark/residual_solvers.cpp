@@ -1,6 +1,6 @@
 // Residual solvers (Eq. 11) on a real case: LEMON network flows vs GLPK's simplex.
 //
-//   residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--augment 0|1] [--scaling 0|1] [--simplex 0|1] [--multilevel 0|1] [--table 0|1] [--ml-radius R] [--ml-cluster C] [--ml-coarsest N] [--ml-refinements N] [--mf-budget W] [--single-blas 0|1] [--verbose]
+//   residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--augment 0|1] [--scaling 0|1] [--simplex 0|1] [--multilevel 0|1] [--table 0|1] [--ml-radius R] [--ml-cluster C] [--ml-coarsest N] [--ml-refinements N] [--ml-descent N] [--ml-finest-radius R] [--mf-budget W] [--single-blas 0|1] [--verbose]
 //
 // Reads the mesh and its curves like the swn tool (OBJ `l` lines and/or a curve file), cuts the mesh
 // so that the curves lie on edges, optionally subdivides it N times 1-to-4 at the edge midpoints
@@ -122,6 +122,7 @@ int main(int argc, char** argv)
       ml_coarsest = int(defaults.coarsest_nodes()), ml_refinements = int(defaults.max_refinements());
   bool single_blas = true;   // one OpenBLAS thread per call, as the swn tool
   double mf_budget = defaults.max_flow_budget();
+  int descent = int(defaults.descent_steps()), finest_radius = defaults.finest_band_radius();
   int repeat = 3, subdivisions = 0;
   for(int i = 1; i < argc; ++i)
   {
@@ -140,12 +141,14 @@ int main(int argc, char** argv)
     else if(a == "--ml-coarsest" && i + 1 < argc) ml_coarsest = std::atoi(argv[++i]);
     else if(a == "--ml-refinements" && i + 1 < argc) ml_refinements = std::atoi(argv[++i]);
     else if(a == "--mf-budget" && i + 1 < argc) mf_budget = std::atof(argv[++i]);
+    else if(a == "--ml-descent" && i + 1 < argc) descent = std::atoi(argv[++i]);
+    else if(a == "--ml-finest-radius" && i + 1 < argc) finest_radius = std::atoi(argv[++i]);
     else if(a == "--table" && i + 1 < argc) run_table = std::atoi(argv[++i]) != 0;
     else if(a == "--single-blas" && i + 1 < argc) single_blas = std::atoi(argv[++i]) != 0;
     else if(a == "--verbose") verbose = true;
     else mesh_file = a;
   }
-  if(mesh_file.empty()) { std::fprintf(stderr, "usage: residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--augment 0|1] [--scaling 0|1] [--simplex 0|1] [--multilevel 0|1] [--table 0|1] [--ml-radius R] [--ml-cluster C] [--ml-coarsest N] [--ml-refinements N] [--mf-budget W] [--single-blas 0|1] [--verbose]\n"); return 2; }
+  if(mesh_file.empty()) { std::fprintf(stderr, "usage: residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--augment 0|1] [--scaling 0|1] [--simplex 0|1] [--multilevel 0|1] [--table 0|1] [--ml-radius R] [--ml-cluster C] [--ml-coarsest N] [--ml-refinements N] [--ml-descent N] [--ml-finest-radius R] [--mf-budget W] [--single-blas 0|1] [--verbose]\n"); return 2; }
   if(single_blas) CGAL::Surface_winding_numbers::use_single_threaded_openblas();
 
   Mesh input;
@@ -233,6 +236,8 @@ int main(int argc, char** argv)
     Lemon lemon(algorithms[k]);
     lemon.set_multilevel_parameters(std::size_t(ml_coarsest), std::size_t(ml_cluster), ml_radius, std::size_t(ml_refinements));
     lemon.set_max_flow_budget(mf_budget);
+    lemon.set_descent_steps(std::size_t((std::max)(0, descent)));
+    lemon.set_finest_band_radius(finest_radius);
     lemon.set_fallback(false);
     lemon.set_verbose(verbose);
     double best = 1e300;
@@ -247,10 +252,10 @@ int main(int argc, char** argv)
     const Lemon::Statistics& st = lemon.statistics();
     if(k == 0) best_objective = P.objective(sigma);
     std::printf("residual %-36s ok %d  best of %d %8.3f s (build %.3f, flow %.3f, recover %.3f)  objective %.13f  violation %.1e  "
-                "nodes %zu  network arcs %zu  nonzero costs %zu  scale 2^%d/2^%d  certified %d  levels %zu  refinements %zu  largest band %zu  max flows %zu (%zu finished by BK)\n",
+                "nodes %zu  network arcs %zu  nonzero costs %zu  scale 2^%d/2^%d  certified %d  levels %zu  refinements %zu  descent steps %zu  largest band %zu  max flows %zu (%zu finished by BK)\n",
                 names[k], int(ok), repeat, best, st.time_build, st.time_solve, st.time_recover, P.objective(sigma),
                 P.max_violation(sigma), st.nodes, st.network_arcs, st.nonzero_cost_arcs, st.cost_exponent,
-                st.capacity_exponent, int(st.certified), st.levels, st.refinements, st.largest_band, st.certificates, st.max_flow_fallbacks);
+                st.capacity_exponent, int(st.certified), st.levels, st.refinements, st.descent_steps, st.largest_band, st.certificates, st.max_flow_fallbacks);
   }
   if(run_glpk)
   {

@@ -212,10 +212,12 @@ void expect_matches_glpk(const SWN::Residual_problem& P, Lemon::Algorithm algori
 }
 
 // a multilevel solver whose hierarchy goes deep even on small problems
-void make_deep(Lemon& lemon, std::size_t max_refinements = 8)
+void make_deep(Lemon& lemon, std::size_t max_refinements = 8, std::size_t descent_steps = 30)
 {
   lemon.set_algorithm(Lemon::MULTILEVEL);
   lemon.set_multilevel_parameters(12, 4, 1, max_refinements);
+  lemon.set_finest_band_radius(2);
+  lemon.set_descent_steps(descent_steps);
 }
 
 const Lemon::Algorithm all_algorithms[] = {Lemon::COST_SCALING_PUSH, Lemon::COST_SCALING_AUGMENT,
@@ -314,6 +316,12 @@ TEST(LemonResidual, NameAndDefaults)
   EXPECT_EQ(p.max_refinements(), 5u);
   p.set_max_flow_budget(-1.);
   EXPECT_EQ(p.max_flow_budget(), -1.);
+  EXPECT_EQ(l.descent_steps(), 30u);
+  EXPECT_EQ(l.finest_band_radius(), 8);
+  p.set_descent_steps(0);
+  EXPECT_EQ(p.descent_steps(), 0u);
+  p.set_finest_band_radius(-2);
+  EXPECT_EQ(p.finest_band_radius(), 0);
 }
 
 TEST(LemonResidual, RandomClosedProblemsMatchGLPK)
@@ -360,31 +368,69 @@ TEST(LemonResidual, AllAlgorithmsAgree)
 }
 
 // The multilevel solver with a deep hierarchy (coarsest level of 12 nodes, clusters of 4, bands of
-// radius 1): bands, refinements around barriers and the final certificate are all exercised, and
-// the optimum is GLPK's.
+// radius 1 and 2): bands, descent steps along barriers, refinements around barriers and the final
+// certificate are all exercised, and the optimum is GLPK's. Without descent steps, barriers are
+// handled by band refinements alone.
 TEST(LemonResidual, MultilevelHierarchyMatchesGLPK)
 {
-  std::size_t refined = 0, deep = 0;
+  for(std::size_t descent : {std::size_t(0), std::size_t(30)})
+  {
+    std::size_t refined = 0, deep = 0, descended = 0;
+    for(unsigned seed = 1; seed <= 16; ++seed)
+    {
+      const bool closed = seed % 4 != 0;
+      const Random_problem rp = random_problem(300 + seed, closed, closed ? 10. : 100., seed % 3 == 0);
+      Lemon lemon;
+      make_deep(lemon, 8, descent);
+      expect_solver_matches_glpk(lemon, rp.P, "multilevel, descent " + std::to_string(descent) + ", seed " + std::to_string(seed));
+      const Lemon::Statistics& st = lemon.statistics();
+      if(descent == 0) EXPECT_EQ(st.descent_steps, 0u);
+      if(!st.fallback)
+      {
+        EXPECT_EQ(st.algorithm, Lemon::MULTILEVEL);
+        EXPECT_GE(st.levels, 3u) << "seed " << seed;
+        EXPECT_LT(st.largest_band, rp.P.number_of_faces + 3) << "seed " << seed;
+        deep += st.levels >= 3;
+        refined += st.refinements > 0;
+        descended += st.descent_steps > 0;
+      }
+    }
+    EXPECT_GE(deep, 12u);   // the hierarchy certified most answers without network simplex on the whole
+    if(descent == 0)
+      EXPECT_GT(refined, 0u);   // some only after a refinement around a barrier
+    else
+      EXPECT_GT(descended, 0u);   // some only after descent steps along barriers
+    std::printf("multilevel, descent steps %zu: %zu of 16 certified through the hierarchy, %zu after refinements, "
+                "%zu after descent steps\n", descent, deep, refined, descended);
+  }
+}
+
+// Descent steps alone (no band refinement allowed): where the certificate of the finest level is
+// refused, the steps along its barriers reach the optimum that GLPK finds; without them, the same
+// settings need network simplex on the whole problem.
+TEST(LemonResidual, DescentStepsReachTheOptimumWithoutBands)
+{
+  std::size_t fallbacks_without = 0, certified_by_descent = 0;
   for(unsigned seed = 1; seed <= 16; ++seed)
   {
     const bool closed = seed % 4 != 0;
-    const Random_problem rp = random_problem(300 + seed, closed, closed ? 10. : 100., seed % 3 == 0);
-    Lemon lemon;
-    make_deep(lemon);
-    expect_solver_matches_glpk(lemon, rp.P, "multilevel, seed " + std::to_string(seed));
-    const Lemon::Statistics& st = lemon.statistics();
-    if(!st.fallback)
+    const Random_problem rp = random_problem(600 + seed, closed, closed ? 10. : 100., seed % 3 == 0);
+    Lemon without, with;
+    make_deep(without, 0, 0);
+    make_deep(with, 0, 1000);
+    expect_solver_matches_glpk(without, rp.P, "no refinement, no descent, seed " + std::to_string(seed));
+    expect_solver_matches_glpk(with, rp.P, "no refinement, descent, seed " + std::to_string(seed));
+    EXPECT_EQ(with.statistics().refinements, 0u);
+    if(without.statistics().fallback)
     {
-      EXPECT_EQ(st.algorithm, Lemon::MULTILEVEL);
-      EXPECT_GE(st.levels, 3u) << "seed " << seed;
-      EXPECT_LT(st.largest_band, rp.P.number_of_faces + 3) << "seed " << seed;
-      deep += st.levels >= 3;
-      refined += st.refinements > 0;
+      ++fallbacks_without;
+      EXPECT_FALSE(with.statistics().fallback) << "seed " << seed;   // descent certified where bands were needed
+      EXPECT_GT(with.statistics().descent_steps, 0u) << "seed " << seed;
+      certified_by_descent += with.statistics().certified && !with.statistics().fallback;
     }
   }
-  EXPECT_GE(deep, 12u);   // the hierarchy certified most answers without network simplex on the whole
-  EXPECT_GT(refined, 0u);   // and some only after a refinement around a barrier
-  std::printf("multilevel: %zu of 16 certified through the hierarchy, %zu after refinements\n", deep, refined);
+  EXPECT_GE(fallbacks_without, 3u);   // the settings do leave refused certificates on the finest level
+  EXPECT_EQ(certified_by_descent, fallbacks_without);
 }
 
 // The certificate's maximum flow, whichever algorithm finishes it (push-relabel alone, Boost's
@@ -529,8 +575,9 @@ TEST(LemonResidual, MultilevelFallsBackToNetworkSimplex)
   {
     const Random_problem rp = random_problem(400 + seed, true, 10., false);
     Lemon lemon;
-    make_deep(lemon, 0);
-    lemon.set_multilevel_parameters(6, 8, 0, 0);   // coarse clusters, no band beyond the jumps
+    make_deep(lemon, 0, 0);
+    lemon.set_multilevel_parameters(6, 8, 0, 0);   // coarse clusters, no band beyond the jumps, no descent
+    lemon.set_finest_band_radius(0);
     expect_solver_matches_glpk(lemon, rp.P, "multilevel without refinement, seed " + std::to_string(seed));
     if(lemon.statistics().fallback)
     {
@@ -786,23 +833,28 @@ TEST(LemonResidual, MultilevelParametersChangeTheTimeNotTheOptimum)
   struct Setting { std::size_t coarsest, cluster; int radius; };
   const Setting settings[] = {{12, 2, 0}, {12, 4, 1}, {12, 16, 6}, {12, 64, 2}, {50, 16, 0}, {2000, 16, 6}};
   std::set<std::size_t> depths;
-  std::size_t refined = 0;
+  std::size_t refined = 0, descended = 0;
   for(const Setting& s : settings)
-  {
-    const std::string what = "coarsest " + std::to_string(s.coarsest) + ", clusters of " + std::to_string(s.cluster) +
-                             ", radius " + std::to_string(s.radius);
-    Lemon lemon(Lemon::MULTILEVEL);
-    lemon.set_multilevel_parameters(s.coarsest, s.cluster, s.radius, 16);
-    ASSERT_TRUE(lemon.solve_residual(P, sigma)) << what << ": " << lemon.error();
-    EXPECT_LE(P.max_violation(sigma), 1e-9) << what;
-    EXPECT_NEAR(P.objective(sigma), o, 1e-9 * (1 + o)) << what;
-    EXPECT_TRUE(lemon.statistics().certified) << what;
-    EXPECT_FALSE(lemon.statistics().fallback) << what;   // certified by the hierarchy, not by a whole solve
-    depths.insert(lemon.statistics().levels);
-    refined += lemon.statistics().refinements > 0;
-  }
+    for(std::size_t descent : {std::size_t(0), std::size_t(30)})
+    {
+      const std::string what = "coarsest " + std::to_string(s.coarsest) + ", clusters of " + std::to_string(s.cluster) +
+                               ", radius " + std::to_string(s.radius) + ", descent steps " + std::to_string(descent);
+      Lemon lemon(Lemon::MULTILEVEL);
+      lemon.set_multilevel_parameters(s.coarsest, s.cluster, s.radius, 16);
+      lemon.set_finest_band_radius(2 * s.radius);
+      lemon.set_descent_steps(descent);
+      ASSERT_TRUE(lemon.solve_residual(P, sigma)) << what << ": " << lemon.error();
+      EXPECT_LE(P.max_violation(sigma), 1e-9) << what;
+      EXPECT_NEAR(P.objective(sigma), o, 1e-9 * (1 + o)) << what;
+      EXPECT_TRUE(lemon.statistics().certified) << what;
+      EXPECT_FALSE(lemon.statistics().fallback) << what;   // certified by the hierarchy, not by a whole solve
+      depths.insert(lemon.statistics().levels);
+      refined += lemon.statistics().refinements > 0;
+      descended += lemon.statistics().descent_steps > 0;
+    }
   EXPECT_GE(depths.size(), 4u);   // the settings did build different hierarchies (1 to 10 levels when written)
-  EXPECT_GE(refined, 2u);         // and some were certified only after refinements around barriers
+  EXPECT_GE(refined, 2u);         // some were certified only after refinements around barriers
+  EXPECT_GE(descended, 2u);       // and some after descent steps along them
   EXPECT_EQ(*depths.begin(), 1u);   // coarsest 2000: the problem is its own coarsest level
 }
 

@@ -119,6 +119,7 @@ public:
     bool certified = false;              ///< the exact duality certificate of the scaled problem held
     std::size_t levels = 0;              ///< `MULTILEVEL`: levels of the hierarchy (1: the problem itself)
     std::size_t refinements = 0;         ///< `MULTILEVEL`: band problems solved on the finest level
+    std::size_t descent_steps = 0;       ///< `MULTILEVEL`: steps along the barriers of refused certificates (every level)
     std::size_t largest_band = 0;        ///< `MULTILEVEL`: nodes of the largest problem given to network simplex
     std::size_t certificates = 0;        ///< `MULTILEVEL`: maximum flows run (every level, every refinement)
     std::size_t max_flow_fallbacks = 0;  ///< `MULTILEVEL`: maximum flows that push-relabel left to Boykov-Kolmogorov
@@ -144,10 +145,15 @@ public:
   budget, see `set_max_flow_budget()`):
   that circulation is an exact certificate that the answer is optimal for the whole problem, and it
   is checked independently (bounds and conservation, in integers). When no such circulation
-  exists, the minimum cut is a set of faces whose shifts can improve the objective; a band around
-  its border (and only there) is re-solved, which lowers the objective, and the certificate is
-  tried again. After `max_refinements` failed
-  certificates (see `set_multilevel_parameters()`), the whole problem goes to `NETWORK_SIMPLEX`
+  exists, the minimum cut is a set of faces whose shifts can all rise with a negative slope of the
+  objective (the steepest such set): the shifts of that set rise by the amount that minimizes the
+  objective along that direction (an exact line search over the breakpoints of the arcs that
+  cross the set's border), and the certificate is tried again from its previous flow. These
+  descent steps are taken on every level (at most `descent_steps()` per level, see
+  `set_descent_steps()`). If the certificate of the finest level is still refused, a band around
+  the border of the set (and only there) is re-solved by network simplex, which lowers the
+  objective, and the certificate is tried again. After `max_refinements` such bands (see
+  `set_multilevel_parameters()`), the whole problem goes to `NETWORK_SIMPLEX`
   (`statistics().fallback`): the answer is always an optimum of the whole problem.
 
   Measured on the demo double torus with loops and its subdivisions (35k, 140k, 560k faces; see
@@ -182,9 +188,11 @@ public:
   void set_verbose(bool b) { verbose_ = b; }
   /*!
   parameters of `MULTILEVEL`: the hierarchy stops at `coarsest_nodes` nodes (default 2000), clusters
-  have at most `cluster_size` nodes (default 16), bands reach `band_radius` arcs (default 6; twice that on the finest level) beyond
-  the jumps, and at most `max_refinements` bands (default 16) are re-solved on the finest level before
-  the whole problem is handed to `NETWORK_SIMPLEX`. They change the running time, never the optimum.
+  have at most `cluster_size` nodes (default 16), bands reach `band_radius` arcs (default 6) beyond
+  the jumps on the coarse levels and around the barriers of refused certificates (see
+  `set_finest_band_radius()` for the first band of the finest level), and at most
+  `max_refinements` bands (default 16) are re-solved on the finest level before the whole problem
+  is handed to `NETWORK_SIMPLEX`. They change the running time, never the optimum.
   */
   void set_multilevel_parameters(std::size_t coarsest_nodes, std::size_t cluster_size, int band_radius,
                                  std::size_t max_refinements)
@@ -202,6 +210,20 @@ public:
   int band_radius() const { return band_radius_; }
   /// \copydoc coarsest_nodes()
   std::size_t max_refinements() const { return max_refinements_; }
+  /// radius, in arcs beyond the jumps carried down from level 1, of the first band solved on the
+  /// finest level of `MULTILEVEL` (default 8). Changes the running time, never the optimum.
+  void set_finest_band_radius(int radius) { finest_band_radius_ = (std::max)(0, radius); }
+  /// the radius of the first band of the finest level (see `set_finest_band_radius()`)
+  int finest_band_radius() const { return finest_band_radius_; }
+  /*!
+  largest number of descent steps that `MULTILEVEL` takes on each level along the barriers of
+  refused certificates before it re-solves bands (default 30; 0: bands only). A step costs one
+  line search and one certificate started from the previous flow; on the finest level of the
+  benchmark it replaces the band refinements. Changes the running time, never the optimum.
+  */
+  void set_descent_steps(std::size_t steps) { descent_steps_ = steps; }
+  /// the largest number of descent steps per level (see `set_descent_steps()`)
+  std::size_t descent_steps() const { return descent_steps_; }
   /*!
   work budget of the push-relabel maximum flow in the certificate of `MULTILEVEL`, in arc scans per
   node and arc of the level (default 200), capped at \f$ 2 \cdot 10^8 \f$ scans in all but never
@@ -1024,6 +1046,53 @@ private:
     return true;
   }
 
+  // one step of steepest descent along the barrier S of a refused certificate (the source side of
+  // a minimum cut: raising pi on S lowers the cost, at the steepest rate among all sets): raise pi
+  // on S by the t > 0 that minimizes the cost along that direction, an exact line search over the
+  // breakpoints of the arcs that cross S (the cost along t is convex and piecewise linear, so t is
+  // the breakpoint where its slope stops being negative). The cost drops strictly; false (pi
+  // unchanged) if the slope at t = 0 is not negative.
+  bool descend_along_barrier(const Level& lv, Int U, std::vector<Int>& pi, const std::vector<char>& S)
+  {
+    std::vector<std::pair<Int, Wide>> kinks;   // (t, rise of the slope there)
+    Wide slope = 0;
+    auto add_kinks = [&](const Int_arc& e, Int J, int dir)
+    {
+      // J moves by dir * t; kinks of f at 0, lo, up, ahead of J in direction dir
+      const Int b[3] = {0, e.has_lo ? e.lo : 0, e.has_up ? e.up : 0};
+      const bool on[3] = {true, e.has_lo, e.has_up};
+      for(int k = 0; k < 3; ++k)
+      {
+        if(!on[k]) continue;
+        if(k > 0 && b[k] == 0) continue;   // merged with the kink at 0
+        if(k == 2 && e.has_lo && e.up == e.lo) continue;
+        const Int t = dir > 0 ? b[k] - J : J - b[k];
+        if(t <= 0) continue;
+        kinks.emplace_back(t, Wide(right_slope(e, b[k], U)) - Wide(left_slope(e, b[k], U)));
+      }
+    };
+    for(const Int_arc& e : lv.arcs)
+    {
+      if(S[e.L] == S[e.R]) continue;
+      const Int J = tension(e, pi);
+      if(S[e.L]) { slope += right_slope(e, J, U); add_kinks(e, J, 1); }
+      else { slope -= left_slope(e, J, U); add_kinks(e, J, -1); }
+    }
+    if(slope >= 0) return false;
+    std::sort(kinks.begin(), kinks.end());
+    Int t = 0;
+    for(const auto& k : kinks)
+    {
+      t = k.first;
+      slope += k.second;
+      if(slope >= 0) break;
+    }
+    if(t <= 0) return false;
+    for(std::size_t v = 0; v < lv.n; ++v)
+      if(S[v]) pi[v] += t;
+    return true;
+  }
+
   bool multilevel(std::size_t nn, std::vector<Int_arc> arcs, Int U, std::vector<Int>& pi, std::string& why)
   {
     std::vector<Level> levels(1);
@@ -1059,10 +1128,11 @@ private:
       for(std::size_t v = 0; v < levels[l].n; ++v) fine[v] = pi[levels[l].parent[v]];
       pi.swap(fine);
       prolong_flow(levels[l], levels[l + 1]);
-      if(!refine(levels[l], U, pi, no_seed, l == 0 ? 2 * band_radius_ : band_radius_, true, why)) return false;
+      if(!refine(levels[l], U, pi, no_seed, l == 0 ? finest_band_radius_ : band_radius_, true, why)) return false;
       std::vector<Int>().swap(levels[l + 1].x);
-      // coarse levels: only the repaired flow, as the start of the next level's flow (refinement
-      // rounds there did not pay off); finest level: refinements until the certificate holds
+      // every level: descent steps along the barriers of refused certificates; then, on the
+      // finest level only, bands around the barriers until the certificate holds (band refinements
+      // on the coarse levels did not pay off)
       const std::size_t rounds = l == 0 ? max_refinements_ : 0;
       if(certify_level(levels, l, U, pi, rounds, why)) { if(l == 0) { stats_.certified = true; return true; } }
       else if(!why.empty()) return false;
@@ -1071,14 +1141,17 @@ private:
     return false;
   }
 
-  // repairs the flow of level l and re-solves bands around the barriers, at most `rounds` times;
-  // true if the flow is a certificate of optimality on the level. `why` is set on errors only.
+  // repairs the flow of level l; while the certificate is refused, takes up to descent_steps_
+  // steepest-descent steps along its barriers, then re-solves bands around the barriers, at most
+  // `rounds` times; true if the flow is a certificate of optimality on the level. `why` is set on
+  // errors only.
   bool certify_level(std::vector<Level>& levels, std::size_t l, Int U, std::vector<Int>& pi, std::size_t rounds,
                      std::string& why)
   {
     Level& lv = levels[l];
     std::vector<char> barrier;
-    for(std::size_t round = 0;; ++round)
+    std::size_t descents = 0, round = 0;
+    for(;;)
     {
       const auto t0 = std::chrono::steady_clock::now();
       const bool certified = repair_flow(lv, U, pi, barrier);
@@ -1091,6 +1164,12 @@ private:
                   << " s" << (certified ? std::string() : ", barrier of " + std::to_string(nb) + " nodes") << "\n";
       }
       if(certified) return true;
+      if(descents < descent_steps_ && descend_along_barrier(lv, U, pi, barrier))
+      {
+        ++descents;
+        ++stats_.descent_steps;
+        continue;
+      }
       if(round >= rounds) return false;
       if(l == 0) ++stats_.refinements;
       // a band around the arcs that cross the barrier only: every piece of the rest lies on one side
@@ -1102,6 +1181,7 @@ private:
         if(barrier[e.L] != barrier[e.R]) seed[e.L] = seed[e.R] = 1;
       const std::vector<Int> before = pi;
       if(!refine(lv, U, pi, seed, band_radius_ + int(round), false, why)) return false;
+      ++round;
       if(pi == before)   // cannot happen in exact arithmetic: the barrier is a descent direction
       {
         why = "a refinement around the barrier of the certificate did not move the shifts";
@@ -1225,6 +1305,8 @@ private:
   std::size_t coarsest_nodes_ = 2000, cluster_size_ = 16, max_refinements_ = 16;
   int band_radius_ = 6;
   double push_relabel_budget_ = 200;
+  std::size_t descent_steps_ = 30;
+  int finest_band_radius_ = 8;
   bool fallback_ = false;
   bool verbose_ = false;
   double tolerance_ = 1e-9;
