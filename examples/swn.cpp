@@ -26,6 +26,9 @@
 #include <string>
 #include <system_error>
 #include <vector>
+#if defined(__linux__)
+#include <unistd.h>
+#endif
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
@@ -164,11 +167,32 @@ std::future<void> start_task(bool sequential, Task task)
   return std::async(std::launch::deferred, task);
 }
 
+// The jump Laplacian and the Hodge step's 2-form Laplacian are factorized side by side on two threads. Under
+// them, CHOLMOD (SuiteSparse 5) runs parts of its supernodal factorization in OpenMP regions of a
+// fixed four threads, and OpenBLAS keeps its own pool: together they put many more threads than
+// cores on the machine, and the first solve of DoubleTorusWithLoops took 0.12-0.30 s instead of
+// 0.085-0.115 s (benchmark/RESULTS.md, Speed). Both limits are read from the environment when the
+// libraries are loaded, before main(); so the tool restarts itself once (Linux: /proc/self/exe)
+// with OMP_THREAD_LIMIT=1 and OPENBLAS_NUM_THREADS=1, keeping whatever the user set. If the
+// restart is not possible, the run goes on in this process.
+void restart_with_one_thread_per_library(char** argv)
+{
+#if defined(__linux__)
+  if(std::getenv("OMP_THREAD_LIMIT") != nullptr && std::getenv("OPENBLAS_NUM_THREADS") != nullptr) return;
+  if(setenv("OMP_THREAD_LIMIT", "1", 0) != 0 || setenv("OPENBLAS_NUM_THREADS", "1", 0) != 0) return;
+  execv("/proc/self/exe", argv);   // returns only on failure
+#else
+  (void)argv;
+#endif
+}
+
 } // namespace
 
 int main(int argc, char** argv)
 {
-  // one OpenBLAS thread per call, so that the two factorizations run side by side
+  restart_with_one_thread_per_library(argv);
+  // one OpenBLAS thread per call, so that the two factorizations run side by side (when the
+  // environment does not say otherwise)
   const bool single_threaded_blas = SWN::use_single_threaded_openblas();
   Options opt;
   try
@@ -183,6 +207,8 @@ int main(int argc, char** argv)
   if(opt.help) { std::cout << usage; return 0; }
   auto log = [&](const std::string& s) { if(opt.verbose) std::cerr << "[swn] " << s << "\n"; };
   if(single_threaded_blas) log("OpenBLAS set to one thread per call (OPENBLAS_NUM_THREADS overrides)");
+  for(const char* var : {"OMP_THREAD_LIMIT", "OPENBLAS_NUM_THREADS"})
+    if(const char* value = std::getenv(var)) log(std::string(var) + "=" + value);
 
   const auto t_start = std::chrono::steady_clock::now();
   Mesh input;

@@ -33,11 +33,12 @@ std::string slurp(const std::string& path)
   return ss.str();
 }
 
-Tool_run run(const std::string& args)
+// runs the tool with `args`; `env` (for instance "env -u X Y=1") goes before it on the command line
+Tool_run run(const std::string& args, const std::string& env = std::string())
 {
   static int counter = 0;
   const fs::path tmp = fs::temp_directory_path() / ("swn_tool_test_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
-  const std::string cmd = "'" + tool + "' " + args + " >'" + tmp.string() + ".out' 2>'" + tmp.string() + ".err'";
+  const std::string cmd = env + " '" + tool + "' " + args + " >'" + tmp.string() + ".out' 2>'" + tmp.string() + ".err'";
   const int raw = std::system(cmd.c_str());
   Tool_run r;
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
@@ -128,6 +129,38 @@ TEST(Tool, HelpAndUsageErrors)
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("no curve"), std::string::npos);
 }
+
+#if defined(__linux__)
+// The tool restarts itself once with one OpenMP thread (CHOLMOD) and one OpenBLAS thread, keeping
+// what the user set, and the answer does not depend on it.
+TEST(Tool, RestartsWithOneThreadPerLibraryKeepingTheUsersSettings)
+{
+  const std::string args = "'" + demo + "torus.obj' --curve '" + demo + "torus-phi.txt' --verbose";
+  std::vector<std::vector<int>> labels;
+  auto solve = [&](const std::string& env, const std::string& name) {
+    const fs::path out = fresh_dir(name);
+    const Tool_run r = run(args + " --output-dir '" + out.string() + "'", env);
+    EXPECT_EQ(r.status, 0) << r.err;
+    labels.push_back(read_labels(out / "labels.txt"));
+    fs::remove_all(out);
+    return r.err;
+  };
+  std::string err = solve("env -u OMP_THREAD_LIMIT -u OPENBLAS_NUM_THREADS", "restart");
+  EXPECT_NE(err.find("[swn] OMP_THREAD_LIMIT=1\n"), std::string::npos) << err;
+  EXPECT_NE(err.find("[swn] OPENBLAS_NUM_THREADS=1\n"), std::string::npos) << err;
+  EXPECT_EQ(err.find("[swn] OMP_THREAD_LIMIT=", err.find("[swn] OMP_THREAD_LIMIT=") + 1), std::string::npos)
+    << "more than one restart: " << err;
+  err = solve("env -u OMP_THREAD_LIMIT OPENBLAS_NUM_THREADS=2", "keep");
+  EXPECT_NE(err.find("[swn] OMP_THREAD_LIMIT=1\n"), std::string::npos) << err;
+  EXPECT_NE(err.find("[swn] OPENBLAS_NUM_THREADS=2\n"), std::string::npos) << err;
+  err = solve("env OMP_THREAD_LIMIT=3 OPENBLAS_NUM_THREADS=2", "none");
+  EXPECT_NE(err.find("[swn] OMP_THREAD_LIMIT=3\n"), std::string::npos) << err;
+  ASSERT_EQ(labels.size(), 3u);
+  EXPECT_FALSE(labels[0].empty());
+  EXPECT_EQ(labels[0], labels[1]);
+  EXPECT_EQ(labels[0], labels[2]);
+}
+#endif
 
 TEST(Tool, MalformedCorpusGivesFileLineAndExitCode2)
 {
