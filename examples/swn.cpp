@@ -72,6 +72,8 @@ static const char* usage =
   "  swn data/swn-demo/DoubleTorusWithLoops.obj --output-dir out/dt --verbose\n"
   "  swn data/swn-demo/bunny.obj --curve data/swn-demo/bunny-brokenheart.txt --output-dir out/bunny\n"
   "\n"
+  "environment: OMP_THREAD_LIMIT and OPENBLAS_NUM_THREADS limit the threads of CHOLMOD and OpenBLAS; unless\n"
+  "both are set, the tool restarts itself once (Linux) with 1 for the ones not set\n\n"
   "exit status: 0 success, 1 solver or output failure, 2 bad input (the message names file and line)\n";
 
 namespace {
