@@ -43,6 +43,17 @@ def run(cmd, **kw):
     return subprocess.run(cmd, check=True, **kw)
 
 
+def solver_environment():
+    """The environment of the solver processes: like the swn tool, one OpenMP thread (CHOLMOD's fixed
+    four-thread regions) and one OpenBLAS thread unless the caller set them; the libraries read both
+    when they load. Under the two concurrent factorizations they otherwise oversubscribe small
+    machines (RESULTS.md, Speed)."""
+    env = dict(os.environ)
+    env.setdefault("OMP_THREAD_LIMIT", "1")
+    env.setdefault("OPENBLAS_NUM_THREADS", "1")
+    return env
+
+
 def solve_case(args, case_id, case_dir, check_api):
     meta = json.load(open(os.path.join(case_dir, "meta.json")))
     cmd = [os.path.join(args.build, "swn_bench_solve"), case_dir, meta["mesh_file"], "--lp", args.lp, "--epsilon", str(args.epsilon)]
@@ -51,7 +62,7 @@ def solve_case(args, case_id, case_dir, check_api):
     row = dict(meta)
     t0 = time.time()
     try:
-        p = subprocess.run(cmd, capture_output=True, text=True, timeout=args.timeout)
+        p = subprocess.run(cmd, capture_output=True, text=True, timeout=args.timeout, env=solver_environment())
         line = p.stdout.strip().splitlines()[-1] if p.stdout.strip() else "{}"
         res = json.loads(line)
         if not res:
@@ -149,7 +160,9 @@ def machine():
                 mem = round(int(line.split()[1]) / 1024 / 1024, 1)
     except OSError:
         pass
-    return {"cpu": cpu, "cores": os.cpu_count(), "memory_gb": mem, "system": platform.platform()}
+    env = solver_environment()
+    return {"cpu": cpu, "cores": os.cpu_count(), "memory_gb": mem, "system": platform.platform(),
+            "solver_thread_limits": {k: env[k] for k in ("OMP_THREAD_LIMIT", "OPENBLAS_NUM_THREADS")}}
 
 
 def git_commit(root):
