@@ -1056,20 +1056,17 @@ private:
   {
     std::vector<std::pair<Int, Wide>> kinks;   // (t, rise of the slope there)
     Wide slope = 0;
+    // J moves by dir * t; the kinks of f (at 0 and at the bounds, each position once) ahead of J
     auto add_kinks = [&](const Int_arc& e, Int J, int dir)
     {
-      // J moves by dir * t; kinks of f at 0, lo, up, ahead of J in direction dir
-      const Int b[3] = {0, e.has_lo ? e.lo : 0, e.has_up ? e.up : 0};
-      const bool on[3] = {true, e.has_lo, e.has_up};
-      for(int k = 0; k < 3; ++k)
+      auto add = [&](Int b)
       {
-        if(!on[k]) continue;
-        if(k > 0 && b[k] == 0) continue;   // merged with the kink at 0
-        if(k == 2 && e.has_lo && e.up == e.lo) continue;
-        const Int t = dir > 0 ? b[k] - J : J - b[k];
-        if(t <= 0) continue;
-        kinks.emplace_back(t, Wide(right_slope(e, b[k], U)) - Wide(left_slope(e, b[k], U)));
-      }
+        const Int t = dir > 0 ? b - J : J - b;
+        if(t > 0) kinks.emplace_back(t, Wide(right_slope(e, b, U)) - Wide(left_slope(e, b, U)));
+      };
+      add(0);
+      if(e.has_lo && e.lo != 0) add(e.lo);
+      if(e.has_up && e.up != 0 && !(e.has_lo && e.up == e.lo)) add(e.up);
     };
     for(const Int_arc& e : lv.arcs)
     {

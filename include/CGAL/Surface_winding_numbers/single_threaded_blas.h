@@ -31,8 +31,9 @@ environment when they are loaded: `OPENBLAS_NUM_THREADS=1` (no OpenBLAS thread p
 `OMP_THREAD_LIMIT=1` (CHOLMOD 3 of SuiteSparse 5 runs parts of its supernodal factorization in
 OpenMP regions of a fixed four threads). With both set, the first solve and the Hodge step together
 took 0.14-0.18 s instead of 0.19-0.39 s on DoubleTorusWithLoops (six runs each), and 0.69-0.89 s
-instead of 0.92-1.26 s at 188k faces (three runs each), 2 cores. Set them in the environment of programs that solve on a machine with few cores; the `swn`
-tool restarts itself once with them on Linux unless they are set.
+instead of 0.92-1.26 s at 188k faces (three runs each), 2 cores. Set them in the environment of
+programs that solve on a machine with few cores; the `swn` tool restarts itself once with them on
+Linux unless they are set.
 
 \returns `true` if OpenBLAS was found and set to one thread, `false` otherwise (another BLAS, a
 platform without weak symbols, or `OPENBLAS_NUM_THREADS` set).
