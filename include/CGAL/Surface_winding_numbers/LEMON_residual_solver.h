@@ -13,13 +13,16 @@
 #include <lemon/smart_graph.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <future>
 #include <iostream>
 #include <limits>
 #include <string>
+#include <system_error>
 #include <utility>
 #include <vector>
 
@@ -122,7 +125,7 @@ public:
     std::size_t descent_steps = 0;       ///< `MULTILEVEL`: steps along the barriers of refused certificates (every level)
     std::size_t largest_band = 0;        ///< `MULTILEVEL`: nodes of the largest problem given to network simplex
     std::size_t certificates = 0;        ///< `MULTILEVEL`: maximum flows run (every level, every refinement)
-    std::size_t max_flow_fallbacks = 0;  ///< `MULTILEVEL`: maximum flows that push-relabel left to Boykov-Kolmogorov
+    std::size_t max_flow_fallbacks = 0;  ///< `MULTILEVEL`: maximum flows that Boykov-Kolmogorov finished (push-relabel over its budget, or slower in a race, see `set_concurrent_max_flows()`)
     double objective = 0;                ///< Eq. 11 objective of `sigma`, recomputed with the original data
     double max_violation = 0;            ///< largest violation of the bounds by `sigma`
     double time_build = 0;               ///< seconds: checks, contraction, gauge, scaling, network
@@ -142,7 +145,8 @@ public:
   runs are carried down the hierarchy, and on the finest level a maximum flow completes them into
   a circulation within the subdifferentials of the objective (push-relabel on the flat arrays of
   `internal::Warm_push_relabel`, handed over to Boost.Graph's Boykov-Kolmogorov beyond a work
-  budget, see `set_max_flow_budget()`):
+  budget, see `set_max_flow_budget()`; on levels of 100,000 nodes or more both run at once on two
+  threads, see `set_concurrent_max_flows()`):
   that circulation is an exact certificate that the answer is optimal for the whole problem, and it
   is checked independently (bounds and conservation, in integers). When no such circulation
   exists, the minimum cut is a set of faces whose shifts can all rise with a negative slope of the
@@ -236,6 +240,29 @@ public:
   void set_max_flow_budget(double work_per_element) { push_relabel_budget_ = work_per_element; }
   /// the work budget of the push-relabel maximum flow (see `set_max_flow_budget()`)
   double max_flow_budget() const { return push_relabel_budget_; }
+  /*!
+  if `enable` (the default), every certificate of `MULTILEVEL` on a level of at least `min_nodes`
+  nodes (default 100,000) runs push-relabel and Boykov-Kolmogorov at once, on two threads, from the
+  same flow, and keeps the flow of the first to finish (the other is stopped at once); push-relabel
+  keeps its work budget (`set_max_flow_budget()`; 0: Boykov-Kolmogorov only), beyond which it
+  stops and leaves the memory bandwidth to Boykov-Kolmogorov. On smaller levels, with `false`, or
+  when no second thread can be started, push-relabel runs first within its budget and
+  Boykov-Kolmogorov finishes the flow from where it stopped.
+  On large meshes neither algorithm is the faster one on every certificate (measured in
+  `benchmark/residual_solvers.md`); on small levels the second thread costs more than it saves.
+  The answer does not depend on which one finishes first: a refused certificate's barrier is the
+  set of faces that cannot reach a missing inflow, the same for every maximum flow. Changes the
+  running time, never the answer.
+  */
+  void set_concurrent_max_flows(bool enable, std::size_t min_nodes = 100000)
+  {
+    concurrent_max_flows_ = enable;
+    concurrent_max_flow_nodes_ = min_nodes;
+  }
+  /// whether certificates on large levels race the two maximum flows (see `set_concurrent_max_flows()`)
+  bool concurrent_max_flows() const { return concurrent_max_flows_; }
+  /// the smallest level, in nodes, on which they do (see `set_concurrent_max_flows()`)
+  std::size_t concurrent_max_flow_nodes() const { return concurrent_max_flow_nodes_; }
 
   /// why the last solve failed (empty after a success)
   const std::string& error() const { return error_; }
@@ -965,27 +992,138 @@ private:
     for(std::size_t v = 0; v < lv.n; ++v) mf.set_terminal(v, Int(supply[v]));
   }
 
-  // Boykov-Kolmogorov (Boost.Graph) from the flow x0, which it completes; true if balanced,
-  // otherwise the source side of a minimum cut is marked in `barrier`
+  // the barrier of a refused certificate, from the flow x it ended with (a maximum flow, or the
+  // maximum preflow of push-relabel): the nodes that cannot reach, along residual arcs, a node that
+  // still lacks inflow. It is the same set for every maximum flow (the source side of the minimum cut
+  // nearest to the sink), so the descent does not depend on which algorithm finished the flow.
+  static void mark_barrier(const Level& lv, const std::vector<Int>& lower, const std::vector<Int>& upper,
+                           const std::vector<Int>& x, std::vector<char>& barrier)
+  {
+    std::vector<Wide> inflow(lv.n, Wide(0));
+    for(std::size_t i = 0; i < lv.arcs.size(); ++i)
+    {
+      inflow[lv.arcs[i].L] -= Wide(x[i]);
+      inflow[lv.arcs[i].R] += Wide(x[i]);
+    }
+    const Adjacency adj(lv.n, lv.arcs);
+    std::vector<char> reaches(lv.n, 0);
+    std::vector<std::size_t> queue;
+    for(std::size_t v = 0; v < lv.n; ++v)
+      if(inflow[v] < 0) { reaches[v] = 1; queue.push_back(v); }
+    for(std::size_t q = 0; q < queue.size(); ++q)
+    {
+      const std::size_t v = queue[q];
+      for(std::size_t k = adj.first[v]; k < adj.first[v + 1]; ++k)
+      {
+        const std::size_t i = adj.arc[k];
+        const Int_arc& e = lv.arcs[i];
+        // u reaches v if the residual arc u -> v has capacity: L -> R while x < upper, R -> L while x > lower
+        const std::size_t u = e.R == v ? e.L : e.R;
+        const bool open = e.R == v ? x[i] < upper[i] : x[i] > lower[i];
+        if(open && !reaches[u]) { reaches[u] = 1; queue.push_back(u); }
+      }
+    }
+    barrier.assign(lv.n, 0);
+    for(std::size_t v = 0; v < lv.n; ++v) barrier[v] = reaches[v] ? 0 : 1;
+  }
+
+  // Boykov-Kolmogorov (Boost.Graph) from the flow x0: x gets the flow it ends with; true if balanced.
+  // Throws internal::Max_flow_stopped if `stop` is raised first.
   static bool boykov_kolmogorov(const Level& lv, const std::vector<Int>& lower, const std::vector<Int>& upper,
-                                std::vector<Int>& x0, std::vector<char>& barrier)
+                                const std::vector<Int>& x0, std::vector<Int>& x, const std::atomic<bool>* stop)
   {
     internal::Boykov_kolmogorov_flow<Int> bk(lv.n);
     load_max_flow(bk, lv, lower, upper, x0);
-    const bool balanced = bk.run();
-    for(std::size_t i = 0; i < x0.size(); ++i) x0[i] += bk.flow(i);
-    if(balanced) return true;
-    for(std::size_t v = 0; v < lv.n; ++v) barrier[v] = bk.source_side(v) ? 1 : 0;
-    return false;
+    const bool balanced = bk.run(stop);
+    x.resize(x0.size());
+    for(std::size_t i = 0; i < x0.size(); ++i) x[i] = x0[i] + bk.flow(i);
+    return balanced;
+  }
+
+  // the work budget of push-relabel on a level, in arc scans: set_max_flow_budget() per element,
+  // capped at 2e8 scans in all on large levels (but never below 60 per element): there
+  // push-relabel's hard certificates cost more than Boykov-Kolmogorov's
+  std::size_t push_relabel_work_limit(const Level& lv) const
+  {
+    const double elements = double(lv.n + 2 * lv.arcs.size());
+    const double budget = (std::max)((std::min)(push_relabel_budget_ * elements, 2e8),
+                                     (std::min)(push_relabel_budget_, 60.) * elements);
+    return push_relabel_budget_ < 0 || budget >= 1e18 ? (std::numeric_limits<std::size_t>::max)() : std::size_t(budget);
+  }
+
+  // push-relabel (this thread, within its budget) and Boykov-Kolmogorov (a second thread) on the
+  // same maximum flow from x0; the first to finish raises the flag that stops the other. x gets the
+  // winner's flow and `balanced` its answer. False if there was no winner (no second thread could
+  // be started, or Boykov-Kolmogorov failed while push-relabel went over its budget).
+  bool race_max_flows(const Level& lv, const std::vector<Int>& lower, const std::vector<Int>& upper,
+                      const std::vector<Int>& x0, std::vector<Int>& x, bool& balanced, std::vector<char>& barrier,
+                      bool& barrier_marked)
+  {
+    typedef internal::Warm_push_relabel<Int> Push_relabel;
+    std::atomic<bool> done(false);
+    std::vector<Int> x_bk;
+    bool bk_balanced = false, bk_won = false;
+    const auto t0 = std::chrono::steady_clock::now();
+    std::future<void> bk;
+    try
+    {
+      bk = std::async(std::launch::async, [&] {
+        try
+        {
+          std::vector<Int> flow;
+          const bool b = boykov_kolmogorov(lv, lower, upper, x0, flow, &done);
+          if(!done.exchange(true)) { bk_won = true; bk_balanced = b; x_bk.swap(flow); }
+        }
+        catch(const internal::Max_flow_stopped&) {}
+        catch(const std::exception&) {}   // out of memory, say: push-relabel finishes on its own
+      });
+    }
+    catch(const std::system_error&) { return false; }
+    typename Push_relabel::Outcome outcome = Push_relabel::STOPPED;
+    bool pr_won = false;
+    {
+      // if push-relabel throws (memory), the other thread is stopped before the exception leaves
+      struct Stop_on_throw
+      {
+        std::atomic<bool>& flag;
+        bool armed;
+        ~Stop_on_throw() { if(armed) flag.store(true); }
+      } stop_on_throw{done, true};
+      Push_relabel pr(lv.n);
+      load_max_flow(pr, lv, lower, upper, x0);
+      // over its budget, push-relabel leaves the memory bandwidth to Boykov-Kolmogorov and waits
+      outcome = pr.run(push_relabel_work_limit(lv), &done);
+      stop_on_throw.armed = false;
+      if(outcome != Push_relabel::STOPPED && outcome != Push_relabel::OVER_BUDGET && !done.exchange(true))
+      {
+        pr_won = true;
+        x = x0;
+        for(std::size_t i = 0; i < x.size(); ++i) x[i] += pr.flow(i);
+        if(outcome == Push_relabel::CUT)
+          for(std::size_t v = 0; v < lv.n; ++v) barrier[v] = pr.source_side(v) ? 1 : 0;
+      }
+    }
+    bk.get();   // joins
+    if(!pr_won && !bk_won) return false;
+    if(pr_won) { balanced = outcome == Push_relabel::BALANCED; barrier_marked = outcome == Push_relabel::CUT; }
+    else { balanced = bk_balanced; x.swap(x_bk); ++stats_.max_flow_fallbacks; }
+    if(verbose_)
+      std::cerr << "[swn] multilevel: " << (pr_won ? "push-relabel" : "Boykov-Kolmogorov") << " finished first, in "
+                << seconds(t0) << " s\n";
+    return true;
   }
 
   // optimality of pi on a level: true if a circulation x with f'-(J) <= x <= f'+(J) exists on every
   // arc; otherwise false, with the nodes of a barrier (a set whose shifts can all rise with a
   // negative slope of the cost) marked in `barrier`. As a maximum flow started from the level's flow
-  // lv.x clamped to the bounds (the flows carried down the hierarchy are nearly balanced): first
-  // push-relabel (internal::Warm_push_relabel), fast while the imbalances are local, within a work
-  // budget; if that is not enough, Boykov-Kolmogorov (Boost.Graph) from where push-relabel stopped.
-  // The source side of a minimum cut is a barrier. lv.x gets the flow found (balanced on success).
+  // lv.x clamped to the bounds (the flows carried down the hierarchy are nearly balanced), by
+  // push-relabel (internal::Warm_push_relabel), fast while the imbalances are local, and by
+  // Boykov-Kolmogorov (Boost.Graph), faster on some large certificates:
+  //  * on levels of at least concurrent_max_flow_nodes_ nodes (if set_concurrent_max_flows()), both
+  //    run at once on two threads from the same flow, and the first to finish stops the other;
+  //  * otherwise push-relabel within a work budget, then Boykov-Kolmogorov from where it stopped.
+  // The barrier does not depend on which one finished (mark_barrier()). lv.x gets the flow found
+  // (balanced on success).
   bool repair_flow(Level& lv, Int U, const std::vector<Int>& pi, std::vector<char>& barrier)
   {
     const std::size_t n = lv.n, na = lv.arcs.size();
@@ -1000,46 +1138,51 @@ private:
       x0[i] = (std::min)(upper[i], (std::max)(lower[i], start));
     }
     barrier.assign(n, 0);
-    bool balanced = false;
     ++stats_.certificates;
     typedef internal::Warm_push_relabel<Int> Push_relabel;
-    typename Push_relabel::Outcome outcome = Push_relabel::OVER_BUDGET;
     const auto t_pr = std::chrono::steady_clock::now();
-    if(push_relabel_budget_ != 0)
+    std::vector<Int> x;
+    bool balanced = false, barrier_marked = false;
+    if(!(concurrent_max_flows_ && n >= concurrent_max_flow_nodes_ && push_relabel_budget_ != 0 &&
+         race_max_flows(lv, lower, upper, x0, x, balanced, barrier, barrier_marked)))
     {
-      Push_relabel pr(n);
-      load_max_flow(pr, lv, lower, upper, x0);
-      // the budget per element, capped at 2e8 arc scans in all on large levels (but never below 60 per
-      // element): there push-relabel's hard certificates cost more than Boykov-Kolmogorov's
-      const double elements = double(n + 2 * na);
-      const double budget = (std::max)((std::min)(push_relabel_budget_ * elements, 2e8),
-                                       (std::min)(push_relabel_budget_, 60.) * elements);
-      outcome = pr.run(push_relabel_budget_ < 0 || budget >= 1e18 ? (std::numeric_limits<std::size_t>::max)()
-                                                                  : std::size_t(budget));
-      for(std::size_t i = 0; i < na; ++i) x0[i] += pr.flow(i);
-      balanced = outcome == Push_relabel::BALANCED;
-      if(outcome == Push_relabel::CUT)
-        for(std::size_t v = 0; v < n; ++v) barrier[v] = pr.source_side(v) ? 1 : 0;
+      typename Push_relabel::Outcome outcome = Push_relabel::OVER_BUDGET;
+      x = x0;
+      if(push_relabel_budget_ != 0)
+      {
+        Push_relabel pr(n);
+        load_max_flow(pr, lv, lower, upper, x0);
+        outcome = pr.run(push_relabel_work_limit(lv));
+        for(std::size_t i = 0; i < na; ++i) x[i] += pr.flow(i);
+        balanced = outcome == Push_relabel::BALANCED;
+        if(outcome == Push_relabel::CUT)
+        {
+          for(std::size_t v = 0; v < n; ++v) barrier[v] = pr.source_side(v) ? 1 : 0;
+          barrier_marked = true;
+        }
+      }
+      if(outcome == Push_relabel::OVER_BUDGET)
+      {
+        if(push_relabel_budget_ != 0) ++stats_.max_flow_fallbacks;
+        const auto t_bk = std::chrono::steady_clock::now();
+        const std::vector<Int> partial = x;
+        balanced = boykov_kolmogorov(lv, lower, upper, partial, x, nullptr);
+        if(verbose_)
+          std::cerr << "[swn] multilevel: push-relabel over budget after " << std::chrono::duration<double>(t_bk - t_pr).count()
+                    << " s, Boykov-Kolmogorov " << seconds(t_bk) << " s\n";
+      }
     }
-    if(outcome == Push_relabel::OVER_BUDGET)
-    {
-      if(push_relabel_budget_ != 0) ++stats_.max_flow_fallbacks;
-      const auto t_bk = std::chrono::steady_clock::now();
-      balanced = boykov_kolmogorov(lv, lower, upper, x0, barrier);
-      if(verbose_)
-        std::cerr << "[swn] multilevel: push-relabel over budget after " << std::chrono::duration<double>(t_bk - t_pr).count()
-                  << " s, Boykov-Kolmogorov " << seconds(t_bk) << " s\n";
-    }
-    lv.x = x0;
+    if(!balanced && !barrier_marked) mark_barrier(lv, lower, upper, x, barrier);
+    lv.x.swap(x);
     if(!balanced) return false;
-    // check the certificate independently: bounds and conservation of x
+    // check the certificate independently: bounds and conservation of the flow
     std::vector<Wide> balance(n, Wide(0));
     for(std::size_t i = 0; i < na; ++i)
     {
-      const Int x = lv.x[i];
-      if(x < lower[i] || x > upper[i]) return false;
-      balance[lv.arcs[i].L] -= Wide(x);
-      balance[lv.arcs[i].R] += Wide(x);
+      const Int xi = lv.x[i];
+      if(xi < lower[i] || xi > upper[i]) return false;
+      balance[lv.arcs[i].L] -= Wide(xi);
+      balance[lv.arcs[i].R] += Wide(xi);
     }
     for(const Wide& b : balance)
       if(b != 0) return false;
@@ -1302,6 +1445,8 @@ private:
   std::size_t coarsest_nodes_ = 2000, cluster_size_ = 16, max_refinements_ = 16;
   int band_radius_ = 6;
   double push_relabel_budget_ = 200;
+  bool concurrent_max_flows_ = true;
+  std::size_t concurrent_max_flow_nodes_ = 100000;
   std::size_t descent_steps_ = 30;
   int finest_band_radius_ = 8;
   bool fallback_ = false;

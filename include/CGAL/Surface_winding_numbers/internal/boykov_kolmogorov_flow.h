@@ -8,6 +8,7 @@
 #include <boost/graph/compressed_sparse_row_graph.hpp>
 #include <boost/property_map/property_map.hpp>
 
+#include <atomic>
 #include <cstddef>
 #include <utility>
 #include <vector>
@@ -16,9 +17,15 @@ namespace CGAL {
 namespace Surface_winding_numbers {
 namespace internal {
 
+// thrown out of Boykov_kolmogorov_flow::run() when its stop flag is raised
+struct Max_flow_stopped {};
+
 // Boost.Graph's Boykov-Kolmogorov maximum flow behind the interface of Warm_push_relabel: arcs with
 // residual capacities both ways, a signed terminal capacity per node (> 0: from the source, < 0: to
 // the sink), run(), the flow of each arc and the source side of a minimum cut.
+// run() can be stopped from another thread: Boost's algorithm reads every residual capacity through
+// a property map, and ours checks a flag first and throws Max_flow_stopped when it is raised (the
+// algorithm's state lives in local containers, which the exception unwinds).
 // The graph is a compressed sparse row graph with its edge data in flat arrays: with an
 // adjacency_list, every edge's properties were a heap block of their own, and on the 1.15M-face
 // certificate of benchmark/residual_solvers.md the flow spent most of its time missing the cache.
@@ -28,6 +35,25 @@ class Boykov_kolmogorov_flow
   typedef boost::compressed_sparse_row_graph<boost::directedS, boost::no_property, boost::no_property,
                                              boost::no_property, std::size_t, std::size_t> Graph;
   typedef typename boost::graph_traits<Graph>::edge_descriptor Edge;
+  typedef typename boost::property_map<Graph, boost::edge_index_t>::const_type Edge_index;
+
+  // the residual capacities, read and written by Boost's algorithm; every read checks the stop flag
+  struct Stoppable_residual_map
+  {
+    typedef Edge key_type;
+    typedef Int value_type;
+    typedef Int& reference;
+    typedef boost::read_write_property_map_tag category;
+    Int* residual;
+    Edge_index index;
+    const std::atomic<bool>* stop;
+    friend Int get(const Stoppable_residual_map& m, const Edge& e)
+    {
+      if(m.stop->load(std::memory_order_relaxed)) throw Max_flow_stopped();
+      return m.residual[get(m.index, e)];
+    }
+    friend void put(const Stoppable_residual_map& m, const Edge& e, Int value) { m.residual[get(m.index, e)] = value; }
+  };
 
 public:
   // n nodes (the source and the sink are two more)
@@ -44,9 +70,11 @@ public:
     else if(t < 0) add(v, n_ + 1, -t, 0);
   }
 
-  // runs the maximum flow; true if it uses up every capacity from the source
-  bool run()
+  // runs the maximum flow; true if it uses up every capacity from the source. If `stop` is given and
+  // becomes true while it runs, it throws Max_flow_stopped (the flow is then lost).
+  bool run(const std::atomic<bool>* stop = nullptr)
   {
+    static const std::atomic<bool> never(false);
     // half-edges h (h ^ 1 is the reverse of h) sorted by tail: half h is edge position_[h] of the graph
     const std::size_t nh = tail_.size(), nv = n_ + 2;
     std::vector<std::size_t> fill(nv + 1, 0);
@@ -78,7 +106,7 @@ public:
     const auto vertex_index = get(boost::vertex_index, g);
     value_ = boost::boykov_kolmogorov_max_flow(
       g, boost::make_iterator_property_map(capacity.begin(), edge_index),
-      boost::make_iterator_property_map(residual_.begin(), edge_index),
+      Stoppable_residual_map{residual_.data(), edge_index, stop != nullptr ? stop : &never},
       boost::make_iterator_property_map(reverse.begin(), edge_index),
       boost::make_iterator_property_map(predecessor.begin(), vertex_index),
       boost::make_iterator_property_map(color_.begin(), vertex_index),

@@ -5,6 +5,7 @@
 #define CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_WARM_PUSH_RELABEL_H
 
 #include <algorithm>
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -53,13 +54,15 @@ public:
   // imbalance of v: t > 0 an excess, t < 0 a deficit
   void set_terminal(std::size_t v, Int t) { b_[v] = t; }
 
-  enum Outcome { BALANCED, CUT, OVER_BUDGET };
+  enum Outcome { BALANCED, CUT, OVER_BUDGET, STOPPED };
 
   // pushes until every excess is absorbed (BALANCED), or no excess can reach a deficit any more
   // (CUT: source_side() is a minimum cut), or more than `work_limit` arcs were scanned
   // (OVER_BUDGET: flow() holds the progress made, a valid preflow); global relabelings count as
-  // one scan of every node and arc
-  Outcome run(std::size_t work_limit = (std::numeric_limits<std::size_t>::max)())
+  // one scan of every node and arc. If `stop` is given, it is read before every discharge: once it
+  // is true, run() returns STOPPED (flow() is then a valid preflow too).
+  Outcome run(std::size_t work_limit = (std::numeric_limits<std::size_t>::max)(),
+              const std::atomic<bool>* stop = nullptr)
   {
     build();
     const Index dead = Index(n_);
@@ -73,6 +76,7 @@ public:
     std::size_t work = 0, total = 0;
     while(highest_ != NONE)
     {
+      if(stop != nullptr && stop->load(std::memory_order_relaxed)) return STOPPED;
       const Index v = bucket_[highest_];
       if(v == NONE) { highest_ = highest_ == 0 ? NONE : highest_ - 1; continue; }
       bucket_[highest_] = next_[v];
