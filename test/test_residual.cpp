@@ -323,7 +323,7 @@ TEST(LemonResidual, NameAndDefaults)
   p.set_finest_band_radius(-2);
   EXPECT_EQ(p.finest_band_radius(), 0);
   EXPECT_TRUE(l.concurrent_max_flows());
-  EXPECT_EQ(l.concurrent_max_flow_nodes(), 100000u);
+  EXPECT_EQ(l.concurrent_max_flow_nodes(), 500000u);
   p.set_concurrent_max_flows(false, 7);
   EXPECT_FALSE(p.concurrent_max_flows());
   EXPECT_EQ(p.concurrent_max_flow_nodes(), 7u);

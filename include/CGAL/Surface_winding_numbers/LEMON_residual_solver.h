@@ -145,8 +145,8 @@ public:
   runs are carried down the hierarchy, and on the finest level a maximum flow completes them into
   a circulation within the subdifferentials of the objective (push-relabel on the flat arrays of
   `internal::Warm_push_relabel`, handed over to Boost.Graph's Boykov-Kolmogorov beyond a work
-  budget, see `set_max_flow_budget()`; on levels of 100,000 nodes or more both run at once on two
-  threads, see `set_concurrent_max_flows()`):
+  budget, see `set_max_flow_budget()`; after a descent step on levels of 500,000 nodes or more both
+  run at once on two threads, see `set_concurrent_max_flows()`):
   that circulation is an exact certificate that the answer is optimal for the whole problem, and it
   is checked independently (bounds and conservation, in integers). When no such circulation
   exists, the minimum cut is a set of faces whose shifts can all rise with a negative slope of the
@@ -241,20 +241,22 @@ public:
   /// the work budget of the push-relabel maximum flow (see `set_max_flow_budget()`)
   double max_flow_budget() const { return push_relabel_budget_; }
   /*!
-  if `enable` (the default), every certificate of `MULTILEVEL` on a level of at least `min_nodes`
-  nodes (default 100,000) runs push-relabel and Boykov-Kolmogorov at once, on two threads, from the
-  same flow, and keeps the flow of the first to finish (the other is stopped at once); push-relabel
-  keeps its work budget (`set_max_flow_budget()`; 0: Boykov-Kolmogorov only), beyond which it
-  stops and leaves the memory bandwidth to Boykov-Kolmogorov. On smaller levels, with `false`, or
-  when no second thread can be started, push-relabel runs first within its budget and
-  Boykov-Kolmogorov finishes the flow from where it stopped.
-  On large meshes neither algorithm is the faster one on every certificate (measured in
-  `benchmark/residual_solvers.md`); on small levels the second thread costs more than it saves.
-  The answer does not depend on which one finishes first: a refused certificate's barrier is the
-  set of faces that cannot reach a missing inflow, the same for every maximum flow. Changes the
-  running time, never the answer.
+  if `enable` (the default), the certificates of `MULTILEVEL` that follow a descent step, on levels
+  of at least `min_nodes` nodes (default 500,000), run push-relabel and Boykov-Kolmogorov at once,
+  on two threads, from the same flow, and keep the flow of the first to finish (the other is
+  stopped at once). Push-relabel keeps its work budget (`set_max_flow_budget()`; 0:
+  Boykov-Kolmogorov only), beyond which it stops and leaves the memory bandwidth to
+  Boykov-Kolmogorov. Otherwise push-relabel runs first within its budget and Boykov-Kolmogorov
+  finishes the flow from where it stopped (also when no second thread can be started).
+  Measured (`benchmark/residual_solvers.md`): after a descent step, neither algorithm is the
+  faster one on every certificate of a large level, and a race costs at most the time of the
+  faster one; on the first certificate of a level, Boykov-Kolmogorov runs much faster from where
+  push-relabel stopped than from the carried-down flow, and on levels below 500,000 nodes the two
+  threads slow each other down more than they gain. The answer does not depend on which one
+  finishes first (a refused certificate's barrier is the set of faces that cannot reach a missing
+  inflow, the same for every maximum flow). Changes the running time, never the answer.
   */
-  void set_concurrent_max_flows(bool enable, std::size_t min_nodes = 100000)
+  void set_concurrent_max_flows(bool enable, std::size_t min_nodes = 500000)
   {
     concurrent_max_flows_ = enable;
     concurrent_max_flow_nodes_ = min_nodes;
@@ -1119,12 +1121,13 @@ private:
   // lv.x clamped to the bounds (the flows carried down the hierarchy are nearly balanced), by
   // push-relabel (internal::Warm_push_relabel), fast while the imbalances are local, and by
   // Boykov-Kolmogorov (Boost.Graph), faster on some large certificates:
-  //  * on levels of at least concurrent_max_flow_nodes_ nodes (if set_concurrent_max_flows()), both
-  //    run at once on two threads from the same flow, and the first to finish stops the other;
+  //  * after a descent step on levels of at least concurrent_max_flow_nodes_ nodes (if
+  //    set_concurrent_max_flows()), both run at once on two threads from the same flow, and the
+  //    first to finish stops the other;
   //  * otherwise push-relabel within a work budget, then Boykov-Kolmogorov from where it stopped.
   // The barrier does not depend on which one finished (mark_barrier()). lv.x gets the flow found
   // (balanced on success).
-  bool repair_flow(Level& lv, Int U, const std::vector<Int>& pi, std::vector<char>& barrier)
+  bool repair_flow(Level& lv, Int U, const std::vector<Int>& pi, std::vector<char>& barrier, bool after_descent)
   {
     const std::size_t n = lv.n, na = lv.arcs.size();
     std::vector<Int> lower(na), upper(na), x0(na);
@@ -1143,7 +1146,7 @@ private:
     const auto t_pr = std::chrono::steady_clock::now();
     std::vector<Int> x;
     bool balanced = false, barrier_marked = false;
-    if(!(concurrent_max_flows_ && n >= concurrent_max_flow_nodes_ && push_relabel_budget_ != 0 &&
+    if(!(concurrent_max_flows_ && after_descent && n >= concurrent_max_flow_nodes_ && push_relabel_budget_ != 0 &&
          race_max_flows(lv, lower, upper, x0, x, balanced, barrier, barrier_marked)))
     {
       typename Push_relabel::Outcome outcome = Push_relabel::OVER_BUDGET;
@@ -1291,10 +1294,12 @@ private:
     Level& lv = levels[l];
     std::vector<char> barrier;
     std::size_t descents = 0, round = 0;
+    bool after_descent = false;
     for(;;)
     {
       const auto t0 = std::chrono::steady_clock::now();
-      const bool certified = repair_flow(lv, U, pi, barrier);
+      const bool certified = repair_flow(lv, U, pi, barrier, after_descent);
+      after_descent = false;
       if(verbose_)
       {
         std::size_t nb = 0;
@@ -1308,6 +1313,7 @@ private:
       {
         ++descents;
         ++stats_.descent_steps;
+        after_descent = true;
         continue;
       }
       if(round >= rounds) return false;
@@ -1446,7 +1452,7 @@ private:
   int band_radius_ = 6;
   double push_relabel_budget_ = 200;
   bool concurrent_max_flows_ = true;
-  std::size_t concurrent_max_flow_nodes_ = 100000;
+  std::size_t concurrent_max_flow_nodes_ = 500000;
   std::size_t descent_steps_ = 30;
   int finest_band_radius_ = 8;
   bool fallback_ = false;
