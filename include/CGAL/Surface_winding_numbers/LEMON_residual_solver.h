@@ -1029,17 +1029,34 @@ private:
     for(std::size_t v = 0; v < lv.n; ++v) barrier[v] = reaches[v] ? 0 : 1;
   }
 
-  // Boykov-Kolmogorov (Boost.Graph) from the flow x0: x gets the flow it ends with; true if balanced.
-  // Throws internal::Max_flow_stopped if `stop` is raised first.
+  // Boykov-Kolmogorov (Boost.Graph) from the flow x, which it completes; true if balanced. Throws
+  // internal::Max_flow_stopped (x unchanged) if `stop` is raised first.
   static bool boykov_kolmogorov(const Level& lv, const std::vector<Int>& lower, const std::vector<Int>& upper,
-                                const std::vector<Int>& x0, std::vector<Int>& x, const std::atomic<bool>* stop)
+                                std::vector<Int>& x, const std::atomic<bool>* stop)
   {
     internal::Boykov_kolmogorov_flow<Int> bk(lv.n);
-    load_max_flow(bk, lv, lower, upper, x0);
+    load_max_flow(bk, lv, lower, upper, x);
     const bool balanced = bk.run(stop);
-    x.resize(x0.size());
-    for(std::size_t i = 0; i < x0.size(); ++i) x[i] = x0[i] + bk.flow(i);
+    for(std::size_t i = 0; i < x.size(); ++i) x[i] += bk.flow(i);
     return balanced;
+  }
+
+  // push-relabel (internal::Warm_push_relabel) from the flow x0 within its budget, stopped early if
+  // `stop` is raised: x gets the flow it ends with and, on a CUT, `barrier` the nodes that cannot
+  // reach a deficit (the set mark_barrier() finds)
+  typename internal::Warm_push_relabel<Int>::Outcome
+  push_relabel(const Level& lv, const std::vector<Int>& lower, const std::vector<Int>& upper, const std::vector<Int>& x0,
+               std::vector<Int>& x, std::vector<char>& barrier, const std::atomic<bool>* stop) const
+  {
+    typedef internal::Warm_push_relabel<Int> Push_relabel;
+    Push_relabel pr(lv.n);
+    load_max_flow(pr, lv, lower, upper, x0);
+    const typename Push_relabel::Outcome outcome = pr.run(push_relabel_work_limit(lv), stop);
+    x = x0;
+    for(std::size_t i = 0; i < x.size(); ++i) x[i] += pr.flow(i);
+    if(outcome == Push_relabel::CUT)
+      for(std::size_t v = 0; v < lv.n; ++v) barrier[v] = pr.source_side(v) ? 1 : 0;
+    return outcome;
   }
 
   // the work budget of push-relabel on a level, in arc scans: set_max_flow_budget() per element,
@@ -1072,8 +1089,8 @@ private:
       bk = std::async(std::launch::async, [&] {
         try
         {
-          std::vector<Int> flow;
-          const bool b = boykov_kolmogorov(lv, lower, upper, x0, flow, &done);
+          std::vector<Int> flow = x0;
+          const bool b = boykov_kolmogorov(lv, lower, upper, flow, &done);
           if(!done.exchange(true)) { bk_won = true; bk_balanced = b; x_bk.swap(flow); }
         }
         catch(const internal::Max_flow_stopped&) {}
@@ -1091,18 +1108,16 @@ private:
         bool armed;
         ~Stop_on_throw() { if(armed) flag.store(true); }
       } stop_on_throw{done, true};
-      Push_relabel pr(lv.n);
-      load_max_flow(pr, lv, lower, upper, x0);
+      std::vector<Int> x_pr;
+      std::vector<char> cut(lv.n, 0);
       // over its budget, push-relabel leaves the memory bandwidth to Boykov-Kolmogorov and waits
-      outcome = pr.run(push_relabel_work_limit(lv), &done);
+      outcome = push_relabel(lv, lower, upper, x0, x_pr, cut, &done);
       stop_on_throw.armed = false;
       if(outcome != Push_relabel::STOPPED && outcome != Push_relabel::OVER_BUDGET && !done.exchange(true))
       {
         pr_won = true;
-        x = x0;
-        for(std::size_t i = 0; i < x.size(); ++i) x[i] += pr.flow(i);
-        if(outcome == Push_relabel::CUT)
-          for(std::size_t v = 0; v < lv.n; ++v) barrier[v] = pr.source_side(v) ? 1 : 0;
+        x.swap(x_pr);
+        barrier.swap(cut);
       }
     }
     bk.get();   // joins
@@ -1153,23 +1168,15 @@ private:
       x = x0;
       if(push_relabel_budget_ != 0)
       {
-        Push_relabel pr(n);
-        load_max_flow(pr, lv, lower, upper, x0);
-        outcome = pr.run(push_relabel_work_limit(lv));
-        for(std::size_t i = 0; i < na; ++i) x[i] += pr.flow(i);
+        outcome = push_relabel(lv, lower, upper, x0, x, barrier, nullptr);
         balanced = outcome == Push_relabel::BALANCED;
-        if(outcome == Push_relabel::CUT)
-        {
-          for(std::size_t v = 0; v < n; ++v) barrier[v] = pr.source_side(v) ? 1 : 0;
-          barrier_marked = true;
-        }
+        barrier_marked = outcome == Push_relabel::CUT;
       }
       if(outcome == Push_relabel::OVER_BUDGET)
       {
         if(push_relabel_budget_ != 0) ++stats_.max_flow_fallbacks;
         const auto t_bk = std::chrono::steady_clock::now();
-        const std::vector<Int> partial = x;
-        balanced = boykov_kolmogorov(lv, lower, upper, partial, x, nullptr);
+        balanced = boykov_kolmogorov(lv, lower, upper, x, nullptr);
         if(verbose_)
           std::cerr << "[swn] multilevel: push-relabel over budget after " << std::chrono::duration<double>(t_bk - t_pr).count()
                     << " s, Boykov-Kolmogorov " << seconds(t_bk) << " s\n";
