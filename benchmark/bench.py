@@ -29,7 +29,7 @@ COLUMNS = [
     "planted_shared_edges", "planted_cancelled_edges", "loops_straightened",
     "ok", "status", "error", "lp_backend", "sparse_solver", "epsilon",
     "error_percent", "naive_error_percent",
-    "G_edges", "G_closed", "G_nonzero_in_homology", "G_homologous_to_planted", "G_planted_edges_matched",
+    "G_edges", "G_closed", "G_closing_units", "G_nonzero_in_homology", "G_homologous_to_planted", "G_planted_edges_matched",
     "loops_recovered", "cost_G", "cost_planted",
     "homology_correction", "hodge_projection", "lp_ran", "lp_variables", "lp_rows", "lp_objective",
     "min_label", "max_label",

@@ -329,6 +329,7 @@ int main(int argc, char** argv)
         << ", \"min_label\": " << min_label << ", \"max_label\": " << max_label
         << ", \"planted_edges_read\": " << planted_edges << ", \"G_edges\": " << G_edges
         << ", \"G_closed\": " << (G_closed ? "true" : "false")
+        << ", \"G_closing_units\": " << rep.nonbounding_closing_units
         << ", \"G_nonzero_in_homology\": " << (G_trivial ? "false" : "true")
         << ", \"G_homologous_to_planted\": " << (G_homologous ? "true" : "false")
         << ", \"G_planted_edges_matched\": " << G_exact_edges

@@ -349,6 +349,7 @@ int main(int argc, char** argv)
       j.key("curve").begin_object()
         .key("edges").value(report.curve_edges).key("interior_endpoints").value(report.interior_endpoints)
         .key("nonbounding_edges").value(G_edges).key("bounding_edges").value(bounding_edges)
+        .key("nonbounding_closing_units").value(report.nonbounding_closing_units)
         .end_object();
       j.key("method").begin_object()
         .key("epsilon").value(opt.epsilon)

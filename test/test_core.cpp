@@ -670,6 +670,135 @@ struct Two_solves
 };
 } // namespace
 
+namespace {
+// the weight of a deviation from g per edge: its length, doubled on the input curve
+double deviation_weight(const SI::Mesh_tables& t, const std::vector<double>& curve, std::size_t e)
+{
+  return t.edge_length(e) * (curve[e] != 0 ? SI::curve_deviation_factor : 1.);
+}
+
+// sum_e weight_e |C_e - g_e| over the interior edges
+double nearest_chain_cost(const SI::Mesh_tables& t, const std::vector<double>& g, const std::vector<double>& curve,
+                          const std::vector<int>& C)
+{
+  double c = 0;
+  for(const SI::Arc& a : t.arcs) c += deviation_weight(t, curve, a.edge) * std::abs(C[a.edge] - g[a.edge]);
+  return c;
+}
+
+// The nearest closed integer chain by GLPK's simplex: an oracle independent of the shortest paths.
+// Per arc, G_a = r_a + p_a + P_a - n_a - N_a with r = round(g); p_a, n_a in [0, 1] carry the first
+// step up or down (cost c_a (|r_a +- 1 - g_a| - |r_a - g_a|), c_a the deviation weight), P_a, N_a >= 0
+// the further ones (cost c_a each); dG = 0 at interior vertices. The cost is exact at integer points and the constraint
+// matrix is a network matrix, so an integral optimal vertex is the integer optimum.
+double nearest_closed_chain_cost_by_lp(const SI::Mesh_tables& t, const std::vector<double>& g,
+                                       const std::vector<double>& curve)
+{
+  glp_prob* lp = glp_create_prob();
+  glp_set_obj_dir(lp, GLP_MIN);
+  const int na = int(t.arcs.size());
+  glp_add_cols(lp, 4 * na);
+  std::vector<int> row_of_vertex(t.nv, 0);
+  int rows = 0;
+  for(std::size_t v = 0; v < t.nv; ++v)
+    if(!t.vertex_on_border[v]) row_of_vertex[v] = ++rows;
+  glp_add_rows(lp, rows);
+  std::vector<double> rhs(rows + 1, 0.);
+  std::vector<int> ia(1), ja(1);
+  std::vector<double> ar(1);
+  double constant = 0;
+  for(int a = 0; a < na; ++a)
+  {
+    const std::size_t e = t.arcs[a].edge;
+    const double l = deviation_weight(t, curve, e), r = double(SI::round_half_away(g[e]));
+    constant += l * std::abs(r - g[e]);
+    const double up = l * (std::abs(r + 1 - g[e]) - std::abs(r - g[e])), down = l * (std::abs(r - 1 - g[e]) - std::abs(r - g[e]));
+    const double cost[4] = {up, l, down, l}, sign[4] = {1, 1, -1, -1};
+    const int tail = row_of_vertex[t.ev[2 * e]], head = row_of_vertex[t.ev[2 * e + 1]];
+    if(tail) rhs[tail] += r;   // dG = 0: sum over the arcs of -G at the tail, +G at the head
+    if(head) rhs[head] -= r;
+    for(int k = 0; k < 4; ++k)
+    {
+      const int c = 4 * a + k + 1;
+      glp_set_col_bnds(lp, c, k % 2 == 0 ? GLP_DB : GLP_LO, 0, 1);
+      glp_set_obj_coef(lp, c, cost[k]);
+      if(tail) { ia.push_back(tail); ja.push_back(c); ar.push_back(-sign[k]); }
+      if(head) { ia.push_back(head); ja.push_back(c); ar.push_back(sign[k]); }
+    }
+  }
+  for(int r = 1; r <= rows; ++r) glp_set_row_bnds(lp, r, GLP_FX, rhs[r], rhs[r]);
+  glp_load_matrix(lp, int(ia.size()) - 1, ia.data(), ja.data(), ar.data());
+  glp_smcp parm;
+  glp_init_smcp(&parm);
+  parm.msg_lev = GLP_MSG_OFF;
+  double cost = -1;
+  if(glp_simplex(lp, &parm) == 0 && glp_get_status(lp) == GLP_OPT)
+  {
+    bool integral = true;
+    for(int c = 1; c <= 4 * na; ++c)
+      integral = integral && std::abs(glp_get_col_prim(lp, c) - std::round(glp_get_col_prim(lp, c))) < 1e-9;
+    if(integral) cost = constant + glp_get_obj_val(lp);
+  }
+  glp_delete_prob(lp);
+  return cost;
+}
+} // namespace
+
+// G (paper Sec. 3.6): round(g) where that is closed, otherwise the closed integer chain nearest to
+// g, checked against a network linear program on a torus and a disk (border) in one mesh.
+TEST(NonboundingChain, ClosesRoundingAtTheLeastCost)
+{
+  Mesh m;
+  const std::vector<Vertex> tv = torus_mesh(m, 9, 7);
+  grid_disk(m, 6, 3);
+  SWN::Surface_winding_numbers_solver<Mesh> s(m);
+  ASSERT_TRUE(s.is_valid()) << s.report().error;
+  const SI::Mesh_tables& t = s.tables();
+  ASSERT_EQ(t.n_components, 2u);
+  // a meridian of the torus: the input curve, and the integer closed chain g is a perturbation of
+  std::vector<Vertex> meridian;
+  for(int j = 0; j <= 7; ++j) meridian.push_back(tv[3 * 7 + j % 7]);
+  const std::vector<double> C = table_chain(m, s, {meridian});
+
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> noise(-0.75, 0.75);
+  std::bernoulli_distribution perturb(0.3), half(0.1);
+  int opened = 0, kept = 0;
+  for(int trial = 0; trial < 40; ++trial)
+  {
+    std::vector<double> g(t.ne, 0.);
+    for(const SI::Arc& a : t.arcs)
+    {
+      g[a.edge] = C[a.edge];
+      if(trial % 4 == 0) { if(perturb(rng)) g[a.edge] += 0.6 * noise(rng); }   // rounding gives C back
+      else if(perturb(rng)) g[a.edge] += noise(rng);
+      else if(half(rng)) g[a.edge] += (trial % 2 ? 0.5 : -0.5);   // ties of the rounding
+    }
+    std::size_t units = 99;
+    const std::vector<int> G = SI::nonbounding_chain(t, g, C, &units);
+    const std::vector<int> rounded = SI::rounded_chain(g);
+    ASSERT_TRUE(SI::is_relatively_closed(t, G)) << "trial " << trial;
+    for(std::size_t e = 0; e < t.ne; ++e)
+      if(t.edge_arc[e] == SI::npos) ASSERT_EQ(G[e], 0) << "G on a border edge, trial " << trial;
+    if(SI::is_relatively_closed(t, rounded))
+    {
+      ++kept;
+      EXPECT_EQ(units, 0u);
+      EXPECT_EQ(G, rounded) << "trial " << trial;
+    }
+    else
+    {
+      ++opened;
+      EXPECT_GT(units, 0u);
+      const double best = nearest_closed_chain_cost_by_lp(t, g, C);
+      ASSERT_GE(best, 0.) << "GLPK failed or its optimum is not integral, trial " << trial;
+      EXPECT_NEAR(nearest_chain_cost(t, g, C, G), best, 1e-9 * (1 + best)) << "trial " << trial;
+    }
+  }
+  EXPECT_GT(opened, 20);   // the instances exercise the closing
+  EXPECT_GT(kept, 0);
+}
+
 TEST(ReducedResidual, AgreesWithTheExactResidualOnSeparatedCurves)
 {
   // broken meridian + broken contractible loop, far apart: the reduced problem (Sec. 6) gives the

@@ -71,7 +71,7 @@ connected component, the label covering the largest area is 0.
     \cgalParamDefault{`false`}
   \cgalParamNEnd
   \cgalParamNBegin{Surface_winding_numbers::parameters::nonbounding_chain_map}
-    \cgalParamDescription{receives the integer nonbounding loops G (same sign convention as `chain`)}
+    \cgalParamDescription{receives the integer nonbounding loops G (same sign convention as `chain`): closed loops, the rounding of g where that is closed (user manual, \ref SWNClosedG)}
     \cgalParamType{a model of `WritablePropertyMap`, key `edge_descriptor`, integer value}
     \cgalParamDefault{not written}
   \cgalParamNEnd

@@ -14,6 +14,7 @@
 #include <CGAL/Surface_winding_numbers/internal/harmonic_part.h>
 #include <CGAL/Surface_winding_numbers/internal/jump_laplace.h>
 #include <CGAL/Surface_winding_numbers/internal/mesh_tables.h>
+#include <CGAL/Surface_winding_numbers/internal/nonbounding_chain.h>
 #include <CGAL/Surface_winding_numbers/internal/reduced_residual.h>
 #include <CGAL/Surface_winding_numbers/internal/residual.h>
 #include <CGAL/Surface_winding_numbers/internal/winding_number.h>
@@ -203,7 +204,7 @@ public:
       const std::size_t c = m_.face_component[k / 3];
       r.w[k] += tau[c] - offset[c];
     }
-    r.G = nonbounding_chain(r.g);
+    r.G = nonbounding_chain(m_, r.g, chain, &rep.nonbounding_closing_units);
     r.bounding = bounding_chain(m_, r.labels);
     rep.min_label = rep.max_label = r.labels.empty() ? 0 : r.labels[0];
     for(int l : r.labels) { rep.min_label = std::min(rep.min_label, l); rep.max_label = std::max(rep.max_label, l); }

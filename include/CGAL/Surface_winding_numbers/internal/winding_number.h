@@ -131,14 +131,6 @@ inline std::vector<int> bounding_chain(const Mesh_tables& m, const std::vector<i
   return B;
 }
 
-// Nonbounding chain G = round(g), g = J v (paper Sec. 3.6).
-inline std::vector<int> nonbounding_chain(const std::vector<double>& g)
-{
-  std::vector<int> G(g.size());
-  for(std::size_t e = 0; e < g.size(); ++e) G[e] = int(round_half_away(g[e]));
-  return G;
-}
-
 } // namespace internal
 } // namespace Surface_winding_numbers
 } // namespace CGAL
