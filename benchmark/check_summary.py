@@ -6,7 +6,8 @@
 Checks accuracy only (never times): required fields present, every case solved, the free function
 agrees with the solver class, gap-free simply connected cases are exact, the genus-0 mean error and
 is under a sane bound, on gap-free surfaces with handles the nonbounding chain G is homologous to
-the planted loops, and SWN beats the naive baseline on surfaces with handles. (The error of single
+the planted loops, G is closed in every case with handles, and SWN beats the naive baseline on
+surfaces with handles. (The error of single
 cases with handles is not bounded: a region may legitimately be absorbed into G, see RESULTS.md.) Prints one line per check and 'N passed, N failed'.
 """
 import argparse
@@ -47,6 +48,10 @@ def main():
         h0 = [r for r in rows if r.get("simply_connected") == "0" and float(r.get("gap_level") or 0) == 0]
         check("gap-free cases with handles: G homologous to the planted loops",
               bool(h0) and all(r.get("loops_recovered") == "1" for r in h0), "(%d cases)" % len(h0))
+        handles = [r for r in rows if r.get("simply_connected") == "0"]
+        open_G = [r["case"] for r in handles if r.get("G_closed") != "1"]
+        check("G is closed (relative to the border) in every case with handles", not open_G,
+              "(%d cases%s)" % (len(handles), ", open: %s" % open_G[:5] if open_G else ""))
         nm, sm = s.get("naive_handles_mean_error_percent"), s.get("handles_mean_error_percent")
         check("SWN beats naive rounding on surfaces with handles", sm is not None and nm is not None and sm < nm,
               "(SWN %s, naive %s)" % (sm, nm))
