@@ -25,6 +25,7 @@
 #include <CGAL/Surface_winding_numbers/IO/read_mesh.h>
 #include <CGAL/Surface_winding_numbers/internal/cotan_weights.h>
 #include <CGAL/Surface_winding_numbers/internal/jump_laplace.h>
+#include <CGAL/Surface_winding_numbers/internal/nonbounding_chain.h>
 #include <CGAL/Surface_winding_numbers/internal/winding_number.h>
 #include <CGAL/Surface_winding_numbers/single_threaded_blas.h>
 
@@ -106,20 +107,6 @@ bool is_relative_boundary(const SI::Mesh_tables& m, const std::vector<long>& D)
       }
     }
   }
-  return true;
-}
-
-// Closed relative to the border: the boundary of the chain vanishes at every vertex off the border.
-bool is_relatively_closed(const SI::Mesh_tables& m, const std::vector<long>& C)
-{
-  std::vector<long> div(m.nv, 0);
-  for(std::size_t e = 0; e < m.ne; ++e)
-  {
-    div[m.ev[2 * e]] -= C[e];
-    div[m.ev[2 * e + 1]] += C[e];
-  }
-  for(std::size_t v = 0; v < m.nv; ++v)
-    if(div[v] != 0 && !m.vertex_on_border[v]) return false;
   return true;
 }
 
@@ -273,7 +260,7 @@ int main(int argc, char** argv)
     for(long x : G_t) G_edges += x != 0;
     std::vector<long> D(m.ne);
     for(std::size_t e = 0; e < m.ne; ++e) D[e] = G_t[e] - P_t[e];
-    const bool G_closed = is_relatively_closed(m, G_t);
+    const bool G_closed = SI::is_relatively_closed(m, G_t);
     const bool G_homologous = ok && is_relative_boundary(m, D);
     const bool G_trivial = is_relative_boundary(m, G_t);
     std::size_t G_exact_edges = 0;   // edges where G equals the planted chain, among the planted edges

@@ -49,19 +49,21 @@ inline std::vector<int> rounded_chain(const std::vector<double>& g)
 
 // The boundary dC of an integer 1-chain C at every vertex: arrivals minus departures along the
 // edges' reference directions.
-inline std::vector<long> chain_divergence(const Mesh_tables& m, const std::vector<int>& C)
+template <class Integer>
+std::vector<long> chain_divergence(const Mesh_tables& m, const std::vector<Integer>& C)
 {
   std::vector<long> d(m.nv, 0);
   for(std::size_t e = 0; e < m.ne; ++e)
   {
-    d[m.ev[2 * e]] -= C[e];
-    d[m.ev[2 * e + 1]] += C[e];
+    d[m.ev[2 * e]] -= long(C[e]);
+    d[m.ev[2 * e + 1]] += long(C[e]);
   }
   return d;
 }
 
 // Whether C is closed relative to the border: dC = 0 at every vertex off the border.
-inline bool is_relatively_closed(const Mesh_tables& m, const std::vector<int>& C)
+template <class Integer>
+bool is_relatively_closed(const Mesh_tables& m, const std::vector<Integer>& C)
 {
   const std::vector<long> d = chain_divergence(m, C);
   for(std::size_t v = 0; v < m.nv; ++v)
