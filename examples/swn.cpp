@@ -182,6 +182,10 @@ void restart_with_one_thread_per_library(char** argv)
 #if defined(__linux__)
   if(std::getenv("OMP_THREAD_LIMIT") != nullptr && std::getenv("OPENBLAS_NUM_THREADS") != nullptr) return;
   if(setenv("OMP_THREAD_LIMIT", "1", 0) != 0 || setenv("OPENBLAS_NUM_THREADS", "1", 0) != 0) return;
+  // counts the restarts for the log (--verbose); the new process has both variables and goes on
+  const char* before = std::getenv("SWN_TOOL_RESTARTS");
+  const std::string count = std::to_string(before ? std::atoi(before) + 1 : 1);
+  if(setenv("SWN_TOOL_RESTARTS", count.c_str(), 1) != 0) return;
   execv("/proc/self/exe", argv);   // returns only on failure
 #else
   (void)argv;
@@ -209,6 +213,8 @@ int main(int argc, char** argv)
   if(opt.help) { std::cout << usage; return 0; }
   auto log = [&](const std::string& s) { if(opt.verbose) std::cerr << "[swn] " << s << "\n"; };
   if(single_threaded_blas) log("OpenBLAS set to one thread per call (OPENBLAS_NUM_THREADS overrides)");
+  if(const char* restarts = std::getenv("SWN_TOOL_RESTARTS"))
+    log(std::string("restarted ") + restarts + " time(s) with one thread per library");
   for(const char* var : {"OMP_THREAD_LIMIT", "OPENBLAS_NUM_THREADS"})
     if(const char* value = std::getenv(var)) log(std::string(var) + "=" + value);
 
