@@ -136,14 +136,20 @@ inline std::size_t close_rounded_chain(const Mesh_tables& m, const std::vector<d
   std::vector<char> done(m.nv + 1, 0);
   using Entry = std::pair<double, std::size_t>;
 
+  // the nodes with flow to send (no node becomes one: a path's source only loses supply)
+  std::vector<std::size_t> sources;
+  for(std::size_t n = 0; n <= m.nv; ++n)
+    if(supply[n] > 0) sources.push_back(n);
+
   std::size_t sent = 0;
   for(;;)
   {
     // multi-source Dijkstra from every node that still has flow to send
     std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
     std::vector<std::size_t> touched;
-    for(std::size_t n = 0; n <= m.nv; ++n)
-      if(supply[n] > 0) { dist[n] = 0.; heap.push({0., n}); touched.push_back(n); }
+    sources.erase(std::remove_if(sources.begin(), sources.end(), [&](std::size_t n) { return supply[n] <= 0; }),
+                  sources.end());
+    for(std::size_t n : sources) { dist[n] = 0.; heap.push({0., n}); touched.push_back(n); }
     if(heap.empty()) break;
     std::size_t target = npos;
     settled.clear();
