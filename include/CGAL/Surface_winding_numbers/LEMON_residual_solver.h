@@ -270,9 +270,9 @@ public:
   on problems of at most `max_nodes` faces (default 1,000,000; 0: none), the first band of each
   level of `MULTILEVEL` grows only around the jumps off the curve (the completions of its gaps, which
   move from level to level); the jumps on the curve (arcs with bounds), which stay in place, bring
-  only their two faces. The bands shrink (chain5_r0_g15's first finest band from 21,324 to 15,028 nodes), and
-  so does network simplex's time; where the certificate that follows has more to repair, it costs
-  more. Measured (`benchmark/residual_solvers.md`): residual 15 % faster summed over the 30 slowest
+  only their two faces. The bands shrink (chain5_r0_g15's first finest band from 21,324 to 15,028
+  nodes), and so does network simplex's time; where the certificate that follows has more to
+  repair, it costs more. Measured (`benchmark/residual_solvers.md`): residual 15 % faster summed over the 30 slowest
   cases of the benchmark (23k-188k faces), 40 % faster on DoubleTorusWithLoops subdivided twice
   (559k faces), about 10 % slower at 1.15M faces, where the first certificate of the finest level
   dominates (hence the default bound). Changes the running time, never the optimum.

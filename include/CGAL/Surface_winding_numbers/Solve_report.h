@@ -83,7 +83,7 @@ struct Solve_report
   /// smallest and largest label written (after normalization)
   int min_label = 0, max_label = 0;
   /// units of flow added to round(g) to close the nonbounding loops \f$ G \f$ (0 when rounding
-  /// edge by edge already gave closed loops; see the user manual, Section "Curves")
+  /// edge by edge already gave closed loops; see \ref SWNClosedG)
   std::size_t nonbounding_closing_units = 0;
   /// @}
   /// \name Timings

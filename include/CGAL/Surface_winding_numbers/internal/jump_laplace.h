@@ -18,14 +18,16 @@ namespace internal {
 
 constexpr double chain_tolerance = 1e-9;
 
-// Boundary 0-chain of a 1-chain (paper Sec. 2.2): arrivals minus departures at every vertex.
-inline std::vector<double> chain_boundary(const Mesh_tables& m, const std::vector<double>& chain)
+// Boundary 0-chain of a 1-chain (paper Sec. 2.2): arrivals minus departures at every vertex, summed
+// as `Sum` (double for real chains; long for integer ones, chain_boundary<long>(m, G)).
+template <class Sum = double, class Value>
+std::vector<Sum> chain_boundary(const Mesh_tables& m, const std::vector<Value>& chain)
 {
-  std::vector<double> d(m.nv, 0.);
+  std::vector<Sum> d(m.nv, Sum(0));
   for(std::size_t e = 0; e < m.ne; ++e)
   {
-    d[m.ev[2 * e + 1]] += chain[e];
-    d[m.ev[2 * e]] -= chain[e];
+    d[m.ev[2 * e + 1]] += Sum(chain[e]);
+    d[m.ev[2 * e]] -= Sum(chain[e]);
   }
   return d;
 }

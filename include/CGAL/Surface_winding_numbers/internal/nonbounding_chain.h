@@ -47,51 +47,42 @@ inline std::vector<int> rounded_chain(const std::vector<double>& g)
   return G;
 }
 
-// The boundary dC of an integer 1-chain C at every vertex: arrivals minus departures along the
-// edges' reference directions.
-template <class Integer>
-std::vector<long> chain_divergence(const Mesh_tables& m, const std::vector<Integer>& C)
-{
-  std::vector<long> d(m.nv, 0);
-  for(std::size_t e = 0; e < m.ne; ++e)
-  {
-    d[m.ev[2 * e]] -= long(C[e]);
-    d[m.ev[2 * e + 1]] += long(C[e]);
-  }
-  return d;
-}
-
 // Whether C is closed relative to the border: dC = 0 at every vertex off the border.
 template <class Integer>
 bool is_relatively_closed(const Mesh_tables& m, const std::vector<Integer>& C)
 {
-  const std::vector<long> d = chain_divergence(m, C);
+  const std::vector<long> d = chain_boundary<long>(m, C);
   for(std::size_t v = 0; v < m.nv; ++v)
     if(d[v] != 0 && !m.vertex_on_border[v]) return false;
   return true;
 }
 
+// Deviations from g on the edges of the input curve count this many times their length: between
+// closings at nearly the same distance from g (g close to 1/2 along a whole broken loop), the one
+// that keeps the curve the user drew wins over the one that drops it.
+constexpr double curve_deviation_factor = 2.;
+
 /*
   Closes the rounded chain G in place: adds the integer flow X on the interior edges that makes
-  G + X relatively closed and minimizes sum_e weight_e |G_e + X_e - g_e| (weight per arc, see the
-  top of this file).
+  G + X relatively closed and minimizes sum_e c_e |G_e + X_e - g_e|, c_e the length of e, times
+  curve_deviation_factor where `chain` (the input curve) is nonzero (see the top of this file).
   Returns the number of units of flow sent (0 when G was already closed).
 
   Nodes are the vertices plus one node standing for the whole border (relative closedness: flow
   may enter or leave the surface there at no cost). The cost of moving X_e by one step is the
-  change of weight_e |G_e + X_e - g_e|, convex in X_e; successive shortest paths with node potentials
+  change of c_e |G_e + X_e - g_e|, convex in X_e; successive shortest paths with node potentials
   keep every reduced cost nonnegative, one unit per Dijkstra search, which stops at the first node
   still missing flow.
 */
 inline std::size_t close_rounded_chain(const Mesh_tables& m, const std::vector<double>& g,
-                                       const std::vector<double>& weight, std::vector<int>& G)
+                                       const std::vector<double>& chain, std::vector<int>& G)
 {
   // A vertex with supply +k has k more arrivals than departures in G: k units must leave it. The
   // border node absorbs (or emits) what the interior vertices leave over.
   const std::size_t border = m.nv;
   std::vector<long> supply(m.nv + 1, 0);
   {
-    const std::vector<long> d = chain_divergence(m, G);
+    const std::vector<long> d = chain_boundary<long>(m, G);
     bool open = false;
     for(std::size_t v = 0; v < m.nv; ++v)
       if(!m.vertex_on_border[v] && d[v] != 0)
@@ -122,6 +113,10 @@ inline std::size_t close_rounded_chain(const Mesh_tables& m, const std::vector<d
     }
   }
 
+  std::vector<double> weight(m.arcs.size());
+  for(std::size_t a = 0; a < m.arcs.size(); ++a)
+    weight[a] = m.edge_length(m.arcs[a].edge) *
+                (std::abs(chain[m.arcs[a].edge]) > chain_tolerance ? curve_deviation_factor : 1.);
   std::vector<int> X(m.arcs.size(), 0);
   // cost of moving X_a by step = +-1
   auto step_cost = [&](std::size_t a, int step) {
@@ -213,21 +208,12 @@ inline std::size_t close_rounded_chain(const Mesh_tables& m, const std::vector<d
   return sent;
 }
 
-// Deviations from g on the edges of the input curve count this many times their length: between
-// closings at nearly the same distance from g (g close to 1/2 along a whole broken loop), the one
-// that keeps the curve the user drew wins over the one that drops it.
-constexpr double curve_deviation_factor = 2.;
-
 // Nonbounding chain G (paper Sec. 3.6): round(g), closed where rounding left it open.
 inline std::vector<int> nonbounding_chain(const Mesh_tables& m, const std::vector<double>& g,
                                           const std::vector<double>& chain, std::size_t* closing_units = nullptr)
 {
   std::vector<int> G = rounded_chain(g);
-  std::vector<double> weight(m.arcs.size());
-  for(std::size_t a = 0; a < m.arcs.size(); ++a)
-    weight[a] = m.edge_length(m.arcs[a].edge) *
-                (std::abs(chain[m.arcs[a].edge]) > chain_tolerance ? curve_deviation_factor : 1.);
-  const std::size_t units = close_rounded_chain(m, g, weight, G);
+  const std::size_t units = close_rounded_chain(m, g, chain, G);
   if(closing_units) *closing_units = units;
   return G;
 }
