@@ -21,6 +21,7 @@
 #include <future>
 #include <iostream>
 #include <limits>
+#include <memory>
 #include <string>
 #include <system_error>
 #include <utility>
@@ -733,6 +734,18 @@ private:
     }
   };
 
+  // what the certificates of a level keep from one to the next: the maximum flows' graphs (built by
+  // the first certificate, reused by those that follow the descent steps, which only change
+  // capacities), the bounds and the adjacency. Allocating them anew for every certificate cost a
+  // quarter of the time on the finest level of 1.15M faces (page faults).
+  struct Certificate_workspace
+  {
+    std::vector<Int> lower, upper, x0, supply;
+    std::unique_ptr<internal::Warm_push_relabel<Int>> push_relabel;
+    std::unique_ptr<internal::Boykov_kolmogorov_flow<Int>> boykov_kolmogorov;
+    std::unique_ptr<Adjacency> adjacency;
+  };
+
   struct Level
   {
     std::size_t n = 0;
@@ -742,6 +755,8 @@ private:
     std::vector<std::size_t> arc_parent;  // arc -> arc of the next coarser level (npos inside a cluster)
     std::vector<signed char> arc_sign;    // -1 where the coarser arc runs the other way
     std::vector<Int> x;                   // a flow within the subdifferentials at the level's answer
+    // the certificates' buffers (the maximum flows fill their own parts, one thread each)
+    mutable std::unique_ptr<Certificate_workspace> workspace;
   };
 
   static bool contractible(const Int_arc& e) { return !e.has_lo && !e.has_up && e.sh == 0; }
@@ -852,11 +867,13 @@ private:
   }
 
   // the flow of a coarser level carried to the arcs of this one: a bundle's flow is shared in
-  // proportion to the weights (so |x| <= w when the bundle's |X| <= its weight), arcs inside a
-  // cluster get 0
+  // proportion to the weights (so |x| <= w when the bundle's |X| <= its weight; the units lost to
+  // rounding go to arcs with room left, so that the shares add up to X exactly), then routed inside
+  // each cluster and region of the coarser levels (balance_inside_regions())
   static void prolong_flow(Level& lv, const Level& coarse)
   {
     lv.x.assign(lv.arcs.size(), 0);
+    std::vector<Int> given(coarse.arcs.size(), 0);   // the part of each coarse flow shared so far
     for(std::size_t i = 0; i < lv.arcs.size(); ++i)
     {
       const std::size_t a = lv.arc_parent[i];
@@ -866,7 +883,125 @@ private:
         lv.x[i] = Int(Wide(X) * Wide(lv.arcs[i].w) / Wide(coarse.arcs[a].w));
       else
         lv.x[i] = X;
+      given[a] += lv.arc_sign[i] * lv.x[i];
     }
+    // the rounding remainders (fewer units than the bundle has arcs), one unit per arc with room
+    for(std::size_t i = 0; i < lv.arcs.size(); ++i)
+    {
+      const std::size_t a = lv.arc_parent[i];
+      if(a == npos || given[a] == coarse.x[a]) continue;
+      const Int unit = lv.arc_sign[i] * (coarse.x[a] > given[a] ? 1 : -1);   // in the fine arc's sense
+      const Int to = lv.x[i] + unit;
+      if(contractible(lv.arcs[i]) && (to > lv.arcs[i].w || to < -lv.arcs[i].w)) continue;
+      lv.x[i] = to;
+      given[a] += lv.arc_sign[i] * unit;
+    }
+  }
+
+  // the shares of the bundles leave imbalances at the nodes of each cluster that add up to the
+  // coarse node's (0: the coarse flow is a circulation); they are routed along the arcs inside the
+  // cluster, whose jump is 0 (subdifferential [-w, w]), by augmenting paths, then along the arcs
+  // inside the clusters of clusters (each region of a coarser level adds up to 0 as well), and so
+  // on up the hierarchy. What remains is left to the maximum flow of the certificate, which would
+  // otherwise have to route every imbalance of the level. On the 1.15M-face level of
+  // benchmark/residual_solvers.md the imbalanced nodes go from 516,000 to 12,000.
+  void balance_inside_regions(std::vector<Level>& levels, std::size_t l) const
+  {
+    const auto t0 = std::chrono::steady_clock::now();
+    Level& lv = levels[l];
+    std::vector<Int> excess;
+    node_supply(lv, lv.x, excess);
+    auto imbalanced = [&] { return lv.n - std::size_t(std::count(excess.begin(), excess.end(), Int(0))); };
+    const std::size_t before = verbose_ ? imbalanced() : 0;
+    std::vector<std::size_t> region = lv.parent;
+    for(std::size_t c = l + 1;; ++c)   // region[v]: v's node on level c
+    {
+      route_inside_regions(lv, region, levels[c].n, excess);
+      if(c + 1 >= levels.size()) break;
+      for(std::size_t v = 0; v < lv.n; ++v) region[v] = levels[c].parent[region[v]];
+    }
+    if(verbose_)
+      std::cerr << "[swn] multilevel: flow carried down to level " << l << ": " << before << " imbalanced nodes, "
+                << imbalanced() << " after routing inside the regions of the coarser levels (" << seconds(t0) << " s)\n";
+  }
+
+  // augmenting paths inside each region (region[v] < nr), from every excess to the deficits
+  // (breadth first, along arcs inside the region with room left: their jump is 0, so their flow
+  // may lie anywhere in [-w, w])
+  static void route_inside_regions(Level& lv, const std::vector<std::size_t>& region, std::size_t nr,
+                                   std::vector<Int>& excess)
+  {
+    // the nodes of each region that have an excess, and the arcs inside the regions at each node
+    std::vector<std::size_t> first(nr + 1, 0), member;
+    for(std::size_t v = 0; v < lv.n; ++v)
+      if(excess[v] > 0) ++first[region[v] + 1];
+    for(std::size_t c = 0; c < nr; ++c) first[c + 1] += first[c];
+    member.resize(first[nr]);
+    {
+      std::vector<std::size_t> fill(first.begin(), first.end() - 1);
+      for(std::size_t v = 0; v < lv.n; ++v)
+        if(excess[v] > 0) member[fill[region[v]]++] = v;
+    }
+    if(member.empty()) return;
+    auto inside = [&](const Int_arc& e) { return region[e.L] == region[e.R] && contractible(e); };
+    std::vector<std::size_t> afirst(lv.n + 1, 0), aarc;
+    for(const Int_arc& e : lv.arcs)
+      if(inside(e)) { ++afirst[e.L + 1]; ++afirst[e.R + 1]; }
+    for(std::size_t v = 0; v < lv.n; ++v) afirst[v + 1] += afirst[v];
+    aarc.resize(afirst[lv.n]);
+    {
+      std::vector<std::size_t> fill(afirst.begin(), afirst.end() - 1);
+      for(std::size_t i = 0; i < lv.arcs.size(); ++i)
+        if(inside(lv.arcs[i])) { aarc[fill[lv.arcs[i].L]++] = i; aarc[fill[lv.arcs[i].R]++] = i; }
+    }
+    // room on arc i from its end `from` to the other: x can rise to w (L -> R) or fall to -w
+    auto room = [&](std::size_t i, std::size_t from) {
+      const Int_arc& e = lv.arcs[i];
+      return from == e.L ? e.w - lv.x[i] : lv.x[i] + e.w;
+    };
+    std::vector<std::size_t> pred_arc(lv.n, npos), queue;
+    std::vector<char> seen(lv.n, 0);
+    for(std::size_t s : member)
+      while(excess[s] > 0)
+      {
+        // breadth-first search for a deficit in the region along arcs with room
+        queue.assign(1, s);
+        seen[s] = 1;
+        std::size_t t = npos;
+        for(std::size_t q = 0; q < queue.size() && t == npos; ++q)
+        {
+          const std::size_t u = queue[q];
+          for(std::size_t j = afirst[u]; j < afirst[u + 1]; ++j)
+          {
+            const std::size_t i = aarc[j];
+            const std::size_t y = lv.arcs[i].L == u ? lv.arcs[i].R : lv.arcs[i].L;
+            if(seen[y] || room(i, u) <= 0) continue;
+            seen[y] = 1;
+            pred_arc[y] = i;
+            queue.push_back(y);
+            if(excess[y] < 0) { t = y; break; }
+          }
+        }
+        for(std::size_t u : queue) seen[u] = 0;
+        if(t == npos) break;
+        Int d = (std::min)(excess[s], -excess[t]);
+        for(std::size_t y = t; y != s;)
+        {
+          const std::size_t i = pred_arc[y];
+          const std::size_t u = lv.arcs[i].L == y ? lv.arcs[i].R : lv.arcs[i].L;
+          d = (std::min)(d, room(i, u));
+          y = u;
+        }
+        for(std::size_t y = t; y != s;)
+        {
+          const std::size_t i = pred_arc[y];
+          const std::size_t u = lv.arcs[i].L == y ? lv.arcs[i].R : lv.arcs[i].L;
+          lv.x[i] += u == lv.arcs[i].L ? d : -d;
+          y = u;
+        }
+        excess[s] -= d;
+        excess[t] += d;
+      }
   }
 
   // one-sided derivatives of f(J) = w |J| + U dist(J, [lo, up])
@@ -1006,19 +1141,31 @@ private:
   }
 
   // a maximum-flow problem from the flow x0 within [lower, upper]: residual capacities both ways,
-  // and the imbalance of x0 at every node as its terminal capacity
+  // and the imbalance of x0 at every node (`supply`) as its terminal capacity. The arcs are added
+  // the first time and only given new capacities afterwards (the graph of the level is kept).
   template <class Max_flow>
   static void load_max_flow(Max_flow& mf, const Level& lv, const std::vector<Int>& lower,
-                            const std::vector<Int>& upper, const std::vector<Int>& x0)
+                            const std::vector<Int>& upper, const std::vector<Int>& x0, const std::vector<Int>& supply)
   {
-    std::vector<Wide> supply(lv.n, Wide(0));
+    const bool reload = mf.number_of_arcs() == lv.arcs.size() && !lv.arcs.empty();
+    for(std::size_t i = 0; i < lv.arcs.size(); ++i)   // x = x0 + flow L->R
+    {
+      if(reload) mf.reset_arc(i, upper[i] - x0[i], x0[i] - lower[i]);
+      else mf.add_arc(lv.arcs[i].L, lv.arcs[i].R, upper[i] - x0[i], x0[i] - lower[i]);
+    }
+    for(std::size_t v = 0; v < lv.n; ++v) mf.set_terminal(v, supply[v]);
+  }
+
+  // the imbalance of the flow x at every node (x leaves L and enters R); it fits in Int (checked
+  // in multilevel(): every node's arcs' capacities add up to less than the largest Int)
+  static void node_supply(const Level& lv, const std::vector<Int>& x, std::vector<Int>& supply)
+  {
+    supply.assign(lv.n, Int(0));
     for(std::size_t i = 0; i < lv.arcs.size(); ++i)
     {
-      mf.add_arc(lv.arcs[i].L, lv.arcs[i].R, upper[i] - x0[i], x0[i] - lower[i]);   // x = x0 + flow L->R
-      supply[lv.arcs[i].L] -= Wide(x0[i]);   // x0 leaves L and enters R
-      supply[lv.arcs[i].R] += Wide(x0[i]);
+      supply[lv.arcs[i].L] -= x[i];
+      supply[lv.arcs[i].R] += x[i];
     }
-    for(std::size_t v = 0; v < lv.n; ++v) mf.set_terminal(v, Int(supply[v]));
   }
 
   // the barrier of a refused certificate, from the flow x it ended with (a maximum flow, or the
@@ -1028,13 +1175,11 @@ private:
   static void mark_barrier(const Level& lv, const std::vector<Int>& lower, const std::vector<Int>& upper,
                            const std::vector<Int>& x, std::vector<char>& barrier)
   {
-    std::vector<Wide> inflow(lv.n, Wide(0));
-    for(std::size_t i = 0; i < lv.arcs.size(); ++i)
-    {
-      inflow[lv.arcs[i].L] -= Wide(x[i]);
-      inflow[lv.arcs[i].R] += Wide(x[i]);
-    }
-    const Adjacency adj(lv.n, lv.arcs);
+    std::vector<Int> inflow;
+    node_supply(lv, x, inflow);
+    Certificate_workspace& ws = *lv.workspace;
+    if(!ws.adjacency) ws.adjacency.reset(new Adjacency(lv.n, lv.arcs));
+    const Adjacency& adj = *ws.adjacency;
     std::vector<char> reaches(lv.n, 0);
     std::vector<std::size_t> queue;
     for(std::size_t v = 0; v < lv.n; ++v)
@@ -1059,12 +1204,16 @@ private:
   // Boykov-Kolmogorov (Boost.Graph) from the flow x, which it completes; true if balanced. Throws
   // internal::Max_flow_stopped (x unchanged) if `stop` is raised first.
   static bool boykov_kolmogorov(const Level& lv, const std::vector<Int>& lower, const std::vector<Int>& upper,
-                                std::vector<Int>& x, const std::atomic<bool>* stop)
+                                std::vector<Int>& x, const std::vector<Int>& supply, const std::atomic<bool>* stop)
   {
-    internal::Boykov_kolmogorov_flow<Int> bk(lv.n);
-    load_max_flow(bk, lv, lower, upper, x);
-    const bool balanced = bk.run(stop);
-    for(std::size_t i = 0; i < x.size(); ++i) x[i] += bk.flow(i);
+    std::unique_ptr<internal::Boykov_kolmogorov_flow<Int>>& bk = lv.workspace->boykov_kolmogorov;
+    if(!bk) bk.reset(new internal::Boykov_kolmogorov_flow<Int>(lv.n));
+    load_max_flow(*bk, lv, lower, upper, x, supply);
+    bool balanced = false;
+    try { balanced = bk->run(stop); }
+    catch(const internal::Max_flow_stopped&) { throw; }   // the graph stays valid
+    catch(...) { bk.reset(); throw; }                     // out of memory, say: built anew next time
+    for(std::size_t i = 0; i < x.size(); ++i) x[i] += bk->flow(i);
     return balanced;
   }
 
@@ -1073,16 +1222,20 @@ private:
   // reach a deficit (the set mark_barrier() finds)
   typename internal::Warm_push_relabel<Int>::Outcome
   push_relabel(const Level& lv, const std::vector<Int>& lower, const std::vector<Int>& upper, const std::vector<Int>& x0,
-               std::vector<Int>& x, std::vector<char>& barrier, const std::atomic<bool>* stop) const
+               const std::vector<Int>& supply, std::vector<Int>& x, std::vector<char>& barrier,
+               const std::atomic<bool>* stop) const
   {
     typedef internal::Warm_push_relabel<Int> Push_relabel;
-    Push_relabel pr(lv.n);
-    load_max_flow(pr, lv, lower, upper, x0);
-    const typename Push_relabel::Outcome outcome = pr.run(push_relabel_work_limit(lv), stop);
+    std::unique_ptr<Push_relabel>& pr = lv.workspace->push_relabel;
+    if(!pr) pr.reset(new Push_relabel(lv.n));
+    load_max_flow(*pr, lv, lower, upper, x0, supply);
+    typename Push_relabel::Outcome outcome;
+    try { outcome = pr->run(push_relabel_work_limit(lv), stop); }
+    catch(...) { pr.reset(); throw; }
     x = x0;
-    for(std::size_t i = 0; i < x.size(); ++i) x[i] += pr.flow(i);
+    for(std::size_t i = 0; i < x.size(); ++i) x[i] += pr->flow(i);
     if(outcome == Push_relabel::CUT)
-      for(std::size_t v = 0; v < lv.n; ++v) barrier[v] = pr.source_side(v) ? 1 : 0;
+      for(std::size_t v = 0; v < lv.n; ++v) barrier[v] = pr->source_side(v) ? 1 : 0;
     return outcome;
   }
 
@@ -1102,8 +1255,8 @@ private:
   // winner's flow and `balanced` its answer. False if there was no winner (no second thread could
   // be started, or Boykov-Kolmogorov failed while push-relabel went over its budget).
   bool race_max_flows(const Level& lv, const std::vector<Int>& lower, const std::vector<Int>& upper,
-                      const std::vector<Int>& x0, std::vector<Int>& x, bool& balanced, std::vector<char>& barrier,
-                      bool& barrier_marked)
+                      const std::vector<Int>& x0, const std::vector<Int>& supply, std::vector<Int>& x, bool& balanced,
+                      std::vector<char>& barrier, bool& barrier_marked)
   {
     typedef internal::Warm_push_relabel<Int> Push_relabel;
     std::atomic<bool> done(false);
@@ -1117,7 +1270,7 @@ private:
         try
         {
           std::vector<Int> flow = x0;
-          const bool b = boykov_kolmogorov(lv, lower, upper, flow, &done);
+          const bool b = boykov_kolmogorov(lv, lower, upper, flow, supply, &done);
           if(!done.exchange(true)) { bk_won = true; bk_balanced = b; x_bk.swap(flow); }
         }
         catch(const internal::Max_flow_stopped&) {}
@@ -1138,7 +1291,7 @@ private:
       std::vector<Int> x_pr;
       std::vector<char> cut(lv.n, 0);
       // over its budget, push-relabel leaves the memory bandwidth to Boykov-Kolmogorov and waits
-      outcome = push_relabel(lv, lower, upper, x0, x_pr, cut, &done);
+      outcome = push_relabel(lv, lower, upper, x0, supply, x_pr, cut, &done);
       stop_on_throw.armed = false;
       if(outcome != Push_relabel::STOPPED && outcome != Push_relabel::OVER_BUDGET && !done.exchange(true))
       {
@@ -1172,7 +1325,12 @@ private:
   bool repair_flow(Level& lv, Int U, const std::vector<Int>& pi, std::vector<char>& barrier, bool after_descent)
   {
     const std::size_t n = lv.n, na = lv.arcs.size();
-    std::vector<Int> lower(na), upper(na), x0(na);
+    if(!lv.workspace) lv.workspace.reset(new Certificate_workspace());
+    Certificate_workspace& ws = *lv.workspace;
+    std::vector<Int>& lower = ws.lower;
+    std::vector<Int>& upper = ws.upper;
+    std::vector<Int>& x0 = ws.x0;
+    lower.resize(na); upper.resize(na); x0.resize(na);
     for(std::size_t i = 0; i < na; ++i)
     {
       const Int_arc& e = lv.arcs[i];
@@ -1182,20 +1340,21 @@ private:
       const Int start = i < lv.x.size() ? lv.x[i] : 0;
       x0[i] = (std::min)(upper[i], (std::max)(lower[i], start));
     }
+    node_supply(lv, x0, ws.supply);
     barrier.assign(n, 0);
     ++stats_.certificates;
     typedef internal::Warm_push_relabel<Int> Push_relabel;
     const auto t_pr = std::chrono::steady_clock::now();
-    std::vector<Int> x;
+    std::vector<Int>& x = lv.x;   // the flow found replaces the level's
     bool balanced = false, barrier_marked = false;
     if(!(concurrent_max_flows_ && after_descent && n >= concurrent_max_flow_nodes_ && push_relabel_budget_ != 0 &&
-         race_max_flows(lv, lower, upper, x0, x, balanced, barrier, barrier_marked)))
+         race_max_flows(lv, lower, upper, x0, ws.supply, x, balanced, barrier, barrier_marked)))
     {
       typename Push_relabel::Outcome outcome = Push_relabel::OVER_BUDGET;
       x = x0;
       if(push_relabel_budget_ != 0)
       {
-        outcome = push_relabel(lv, lower, upper, x0, x, barrier, nullptr);
+        outcome = push_relabel(lv, lower, upper, x0, ws.supply, x, barrier, nullptr);
         balanced = outcome == Push_relabel::BALANCED;
         barrier_marked = outcome == Push_relabel::CUT;
       }
@@ -1203,25 +1362,22 @@ private:
       {
         if(push_relabel_budget_ != 0) ++stats_.max_flow_fallbacks;
         const auto t_bk = std::chrono::steady_clock::now();
-        balanced = boykov_kolmogorov(lv, lower, upper, x, nullptr);
+        std::vector<Int> supply;   // of push-relabel's preflow
+        node_supply(lv, x, supply);
+        balanced = boykov_kolmogorov(lv, lower, upper, x, supply, nullptr);
         if(verbose_)
           std::cerr << "[swn] multilevel: push-relabel over budget after " << std::chrono::duration<double>(t_bk - t_pr).count()
                     << " s, Boykov-Kolmogorov " << seconds(t_bk) << " s\n";
       }
     }
     if(!balanced && !barrier_marked) mark_barrier(lv, lower, upper, x, barrier);
-    lv.x.swap(x);
     if(!balanced) return false;
     // check the certificate independently: bounds and conservation of the flow
-    std::vector<Wide> balance(n, Wide(0));
     for(std::size_t i = 0; i < na; ++i)
-    {
-      const Int xi = lv.x[i];
-      if(xi < lower[i] || xi > upper[i]) return false;
-      balance[lv.arcs[i].L] -= Wide(xi);
-      balance[lv.arcs[i].R] += Wide(xi);
-    }
-    for(const Wide& b : balance)
+      if(x[i] < lower[i] || x[i] > upper[i]) return false;
+    std::vector<Int>& balance = ws.supply;
+    node_supply(lv, x, balance);
+    for(const Int b : balance)
       if(b != 0) return false;
     return true;
   }
@@ -1306,8 +1462,10 @@ private:
       for(std::size_t v = 0; v < levels[l].n; ++v) fine[v] = pi[levels[l].parent[v]];
       pi.swap(fine);
       prolong_flow(levels[l], levels[l + 1]);
+      balance_inside_regions(levels, l);
       if(!refine(levels[l], U, pi, no_seed, l == 0 ? finest_band_radius_ : band_radius_, true, narrow, why)) return false;
       std::vector<Int>().swap(levels[l + 1].x);
+      levels[l + 1].workspace.reset();
       // every level: descent steps along the barriers of refused certificates; then, on the
       // finest level only, bands around the barriers until the certificate holds (band refinements
       // on the coarse levels did not pay off)

@@ -57,62 +57,55 @@ class Boykov_kolmogorov_flow
 
 public:
   // n nodes (the source and the sink are two more)
-  explicit Boykov_kolmogorov_flow(std::size_t n) : n_(n) {}
+  explicit Boykov_kolmogorov_flow(std::size_t n) : n_(n), terminal_(n, Int(0)) {}
 
   // an arc u -> v with residual capacities c_uv (u -> v) and c_vu (v -> u); its net flow u -> v is
   // flow(i) after run(), i being the number of arcs added before it
   void add_arc(std::size_t u, std::size_t v, Int c_uv, Int c_vu) { arcs_.push_back(add(u, v, c_uv, c_vu)); }
 
-  // terminal capacity of v: t > 0 from the source to v, t < 0 from v to the sink
-  void set_terminal(std::size_t v, Int t)
+  // arc i gets the residual capacities c_uv and c_vu of a new problem on the same graph (the graph
+  // built by the first run() is kept)
+  void reset_arc(std::size_t i, Int c_uv, Int c_vu)
   {
-    if(t > 0) sources_.push_back(add(n_, v, t, 0));
-    else if(t < 0) add(v, n_ + 1, -t, 0);
+    cap_[arcs_[i]] = c_uv;
+    cap_[arcs_[i] ^ 1] = c_vu;
   }
+  // the number of arcs added
+  std::size_t number_of_arcs() const { return arcs_.size(); }
+
+  // terminal capacity of v: t > 0 from the source to v, t < 0 from v to the sink
+  void set_terminal(std::size_t v, Int t) { terminal_[v] = t; }
 
   // runs the maximum flow; true if it uses up every capacity from the source. If `stop` is given and
-  // becomes true while it runs, it throws Max_flow_stopped (the flow is then lost).
+  // becomes true while it runs, it throws Max_flow_stopped (the flow is then lost). Every node has an
+  // arc from the source and one to the sink (capacity 0 where its terminal capacity has the other
+  // sign), so that the graph, built by the first run, serves every later one.
   bool run(const std::atomic<bool>* stop = nullptr)
   {
     static const std::atomic<bool> never(false);
-    // half-edges h (h ^ 1 is the reverse of h) sorted by tail: half h is edge position_[h] of the graph
-    const std::size_t nh = tail_.size(), nv = n_ + 2;
-    std::vector<std::size_t> fill(nv + 1, 0);
-    for(std::size_t h = 0; h < nh; ++h) ++fill[tail_[h] + 1];
-    for(std::size_t v = 0; v < nv; ++v) fill[v + 1] += fill[v];
-    position_.resize(nh);
-    std::vector<std::pair<std::size_t, std::size_t>> sorted(nh);
-    for(std::size_t h = 0; h < nh; ++h)
+    if(!built_) build();
+    const std::size_t nh = position_.size(), nv = n_ + 2;
+    for(std::size_t v = 0; v < n_; ++v)
     {
-      position_[h] = fill[tail_[h]]++;
-      sorted[position_[h]] = std::make_pair(tail_[h], tail_[h ^ 1]);
+      cap_[first_terminal_ + 4 * v] = terminal_[v] > 0 ? terminal_[v] : Int(0);       // source -> v
+      cap_[first_terminal_ + 4 * v + 2] = terminal_[v] < 0 ? -terminal_[v] : Int(0);  // v -> sink
     }
-    Graph g(boost::edges_are_sorted, sorted.begin(), sorted.end(), nv);
-    std::vector<std::pair<std::size_t, std::size_t>>().swap(sorted);
-    std::vector<Edge> edge_at(nh);
-    for(Edge e : boost::make_iterator_range(edges(g))) edge_at[get(boost::edge_index, g, e)] = e;
-    std::vector<Int> capacity(nh);
-    std::vector<Edge> reverse(nh);
-    for(std::size_t h = 0; h < nh; ++h)
-    {
-      capacity[position_[h]] = cap_[h];
-      reverse[position_[h]] = edge_at[position_[h ^ 1]];
-    }
+    for(std::size_t h = 0; h < nh; ++h) capacity_[position_[h]] = cap_[h];
     residual_.assign(nh, Int(0));
     color_.assign(nv, boost::white_color);
-    std::vector<Edge> predecessor(nv);
-    std::vector<long> distance(nv, 0);
-    const auto edge_index = get(boost::edge_index, g);
-    const auto vertex_index = get(boost::vertex_index, g);
+    predecessor_.assign(nv, Edge());
+    distance_.assign(nv, 0);
+    const auto edge_index = get(boost::edge_index, graph_);
+    const auto vertex_index = get(boost::vertex_index, graph_);
     value_ = boost::boykov_kolmogorov_max_flow(
-      g, boost::make_iterator_property_map(capacity.begin(), edge_index),
+      graph_, boost::make_iterator_property_map(capacity_.begin(), edge_index),
       Stoppable_residual_map{residual_.data(), edge_index, stop != nullptr ? stop : &never},
-      boost::make_iterator_property_map(reverse.begin(), edge_index),
-      boost::make_iterator_property_map(predecessor.begin(), vertex_index),
+      boost::make_iterator_property_map(reverse_.begin(), edge_index),
+      boost::make_iterator_property_map(predecessor_.begin(), vertex_index),
       boost::make_iterator_property_map(color_.begin(), vertex_index),
-      boost::make_iterator_property_map(distance.begin(), vertex_index), vertex_index, n_, n_ + 1);
-    for(std::size_t h : sources_)
-      if(residual_[position_[h]] != 0) return false;
+      boost::make_iterator_property_map(distance_.begin(), vertex_index), vertex_index, n_, n_ + 1);
+    for(std::size_t v = 0; v < n_; ++v)
+      if(terminal_[v] > 0 && residual_[position_[first_terminal_ + 4 * v]] != 0) return false;
     return true;
   }
 
@@ -136,9 +129,47 @@ private:
     return h;
   }
 
+  // the terminal arcs of every node, then the graph: half-edges h (h ^ 1 is the reverse of h) sorted
+  // by tail, half h being edge position_[h] of the graph
+  void build()
+  {
+    built_ = true;
+    first_terminal_ = tail_.size();
+    for(std::size_t v = 0; v < n_; ++v)
+    {
+      add(n_, v, 0, 0);
+      add(v, n_ + 1, 0, 0);
+    }
+    const std::size_t nh = tail_.size(), nv = n_ + 2;
+    std::vector<std::size_t> fill(nv + 1, 0);
+    for(std::size_t h = 0; h < nh; ++h) ++fill[tail_[h] + 1];
+    for(std::size_t v = 0; v < nv; ++v) fill[v + 1] += fill[v];
+    position_.resize(nh);
+    std::vector<std::pair<std::size_t, std::size_t>> sorted(nh);
+    for(std::size_t h = 0; h < nh; ++h)
+    {
+      position_[h] = fill[tail_[h]]++;
+      sorted[position_[h]] = std::make_pair(tail_[h], tail_[h ^ 1]);
+    }
+    graph_ = Graph(boost::edges_are_sorted, sorted.begin(), sorted.end(), nv);
+    std::vector<std::pair<std::size_t, std::size_t>>().swap(sorted);
+    std::vector<std::size_t>().swap(tail_);
+    std::vector<Edge> edge_at(nh);
+    for(Edge e : boost::make_iterator_range(edges(graph_))) edge_at[get(boost::edge_index, graph_, e)] = e;
+    capacity_.resize(nh);
+    reverse_.resize(nh);
+    for(std::size_t h = 0; h < nh; ++h) reverse_[position_[h]] = edge_at[position_[h ^ 1]];
+  }
+
   std::size_t n_;
-  std::vector<std::size_t> tail_, position_, arcs_, sources_;
-  std::vector<Int> cap_, residual_;
+  std::vector<Int> terminal_;
+  std::vector<std::size_t> tail_, position_, arcs_;
+  std::vector<Int> cap_, capacity_, residual_;
+  std::size_t first_terminal_ = 0;
+  bool built_ = false;
+  Graph graph_;
+  std::vector<Edge> reverse_, predecessor_;
+  std::vector<long> distance_;
   std::vector<boost::default_color_type> color_;
   Int value_ = 0;
 };

@@ -51,6 +51,16 @@ public:
     return tail_.size() / 2 - 1;
   }
 
+  // arc i gets the residual capacities c_uv and c_vu of a new problem on the same graph (the
+  // arrays built by the first run() are kept: no allocation)
+  void reset_arc(std::size_t i, Int c_uv, Int c_vu)
+  {
+    r_[2 * i] = c_uv;
+    r_[2 * i + 1] = c_vu;
+  }
+  // the number of arcs added
+  std::size_t number_of_arcs() const { return r_.size() / 2; }
+
   // imbalance of v: t > 0 an excess, t < 0 a deficit
   void set_terminal(std::size_t v, Int t) { b_[v] = t; }
 
@@ -107,10 +117,13 @@ public:
 private:
   static constexpr Index NONE = (std::numeric_limits<Index>::max)();
 
+  // the arcs grouped by tail, once; later runs only copy the capacities
   void build()
   {
-    const std::size_t na = tail_.size();
     cap0_ = r_;
+    if(built_) return;
+    built_ = true;
+    const std::size_t na = tail_.size();
     head_.resize(na);
     for(std::size_t a = 0; a < na; ++a) head_[a] = tail_[a ^ 1];
     first_.assign(n_ + 1, 0);
@@ -205,6 +218,7 @@ private:
   std::vector<Index> label_, current_, queue_;
   std::vector<Index> bucket_, next_;   // active nodes per label, as singly linked stacks
   Index highest_ = NONE;
+  bool built_ = false;
 };
 
 } // namespace internal
