@@ -536,6 +536,82 @@ TEST(LemonResidual, MaximumFlowsStopWhenAsked)
   }
 }
 
+// The certificates of a level reuse their maximum flows: the graph is built by the first run and
+// later problems only reset the capacities (reset_arc) and the imbalances. Five problems in a row on
+// one random graph: the reused objects move the same value, find the same outcome and the same
+// flow as objects built afresh for each problem (both algorithms are deterministic).
+TEST(LemonResidual, MaximumFlowsReusedOnTheSameGraphAnswerAsNewOnes)
+{
+  typedef long long Int;
+  typedef SI::Warm_push_relabel<Int> PR;
+  typedef SI::Boykov_kolmogorov_flow<Int> BK;
+  std::size_t problems = 0, cuts = 0;
+  for(unsigned seed = 1; seed <= 60; ++seed)
+  {
+    std::mt19937 gen(seed);
+    const std::size_t n = 5 + gen() % 40, m = n + gen() % (3 * n);
+    std::vector<std::size_t> tail(m), head(m);
+    for(std::size_t i = 0; i < m; ++i)
+    {
+      tail[i] = gen() % n;
+      head[i] = (tail[i] + 1 + gen() % (n - 1)) % n;
+    }
+    PR pr_kept(n);
+    BK bk_kept(n);
+    for(int round = 0; round < 5; ++round, ++problems)
+    {
+      std::vector<Int> cap(m), back(m), b(n, 0);
+      for(std::size_t i = 0; i < m; ++i)
+      {
+        cap[i] = Int(gen() % 12);
+        back[i] = gen() % 3 == 0 ? 0 : Int(gen() % 12);
+      }
+      for(std::size_t k = 0; k < n; ++k)
+      {
+        const Int d = Int(gen() % 9);
+        b[gen() % n] += d;
+        b[gen() % n] -= d;
+      }
+      PR pr_new(n);
+      BK bk_new(n);
+      for(std::size_t i = 0; i < m; ++i)
+      {
+        pr_new.add_arc(tail[i], head[i], cap[i], back[i]);
+        bk_new.add_arc(tail[i], head[i], cap[i], back[i]);
+        if(round == 0) { pr_kept.add_arc(tail[i], head[i], cap[i], back[i]); bk_kept.add_arc(tail[i], head[i], cap[i], back[i]); }
+        else { pr_kept.reset_arc(i, cap[i], back[i]); bk_kept.reset_arc(i, cap[i], back[i]); }
+      }
+      ASSERT_EQ(pr_kept.number_of_arcs(), m);
+      ASSERT_EQ(bk_kept.number_of_arcs(), m);
+      for(std::size_t v = 0; v < n; ++v)
+      {
+        pr_new.set_terminal(v, b[v]); pr_kept.set_terminal(v, b[v]);
+        bk_new.set_terminal(v, b[v]); bk_kept.set_terminal(v, b[v]);
+      }
+      const PR::Outcome outcome = pr_new.run();
+      EXPECT_EQ(pr_kept.run(), outcome) << "seed " << seed << ", round " << round;
+      const bool balanced = bk_new.run();
+      EXPECT_EQ(bk_kept.run(), balanced) << "seed " << seed << ", round " << round;
+      EXPECT_EQ(balanced, outcome == PR::BALANCED) << "seed " << seed << ", round " << round;
+      EXPECT_EQ(bk_kept.value(), bk_new.value()) << "seed " << seed << ", round " << round;
+      if(outcome == PR::CUT) ++cuts;
+      for(std::size_t i = 0; i < m; ++i)
+      {
+        EXPECT_EQ(pr_kept.flow(i), pr_new.flow(i)) << "seed " << seed << ", round " << round;
+        EXPECT_EQ(bk_kept.flow(i), bk_new.flow(i)) << "seed " << seed << ", round " << round;
+      }
+      for(std::size_t v = 0; v < n; ++v)
+      {
+        EXPECT_EQ(pr_kept.source_side(v), pr_new.source_side(v)) << "seed " << seed << ", round " << round;
+        EXPECT_EQ(bk_kept.source_side(v), bk_new.source_side(v)) << "seed " << seed << ", round " << round;
+      }
+    }
+  }
+  EXPECT_EQ(problems, 300u);
+  EXPECT_GT(cuts, 0u);
+  EXPECT_LT(cuts, problems);
+}
+
 // internal::Warm_push_relabel on random networks with scattered excesses and deficits: the flow it
 // moves is a maximum flow (the value of internal::Boykov_kolmogorov_flow, Boost's, from scratch), stays within the
 // capacities and conserves every imbalance it does not absorb; on a cut, no residual arc leaves

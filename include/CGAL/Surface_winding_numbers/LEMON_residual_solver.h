@@ -959,10 +959,12 @@ private:
       const Int_arc& e = lv.arcs[i];
       return from == e.L ? e.w - lv.x[i] : lv.x[i] + e.w;
     };
+    // a search that finds no deficit marks what it reached as dead: a set that cannot reach a deficit
+    // never will (an augmenting path never enters it, so no arc out of it gains room)
     std::vector<std::size_t> pred_arc(lv.n, npos), queue;
-    std::vector<char> seen(lv.n, 0);
+    std::vector<char> seen(lv.n, 0), dead(lv.n, 0);
     for(std::size_t s : member)
-      while(excess[s] > 0)
+      while(excess[s] > 0 && !dead[s])
       {
         // breadth-first search for a deficit in the region along arcs with room
         queue.assign(1, s);
@@ -975,14 +977,14 @@ private:
           {
             const std::size_t i = aarc[j];
             const std::size_t y = lv.arcs[i].L == u ? lv.arcs[i].R : lv.arcs[i].L;
-            if(seen[y] || room(i, u) <= 0) continue;
+            if(seen[y] || dead[y] || room(i, u) <= 0) continue;
             seen[y] = 1;
             pred_arc[y] = i;
             queue.push_back(y);
             if(excess[y] < 0) { t = y; break; }
           }
         }
-        for(std::size_t u : queue) seen[u] = 0;
+        for(std::size_t u : queue) { seen[u] = 0; if(t == npos) dead[u] = 1; }
         if(t == npos) break;
         Int d = (std::min)(excess[s], -excess[t]);
         for(std::size_t y = t; y != s;)
