@@ -902,9 +902,11 @@ private:
   // coarse node's (0: the coarse flow is a circulation); they are routed along the arcs inside the
   // cluster, whose jump is 0 (subdifferential [-w, w]), by augmenting paths, then along the arcs
   // inside the clusters of clusters (each region of a coarser level adds up to 0 as well), and so
-  // on up the hierarchy. What remains is left to the maximum flow of the certificate, which would
-  // otherwise have to route every imbalance of the level. On the 1.15M-face level of
-  // benchmark/residual_solvers.md the imbalanced nodes go from 516,000 to 12,000.
+  // on up the hierarchy, while the regions have at most 512 nodes of the level on average. What
+  // remains is left to the maximum flow of the certificate, which would otherwise have to route
+  // every imbalance of the level. On the 1.15M-face level of benchmark/residual_solvers.md the
+  // imbalanced nodes go from 584,000 to 26,000 in 1.5 s (12,000 in 4.8 s with the regions of 956
+  // nodes: not worth it), and the first certificate takes 12.5 s instead of 19-21 s.
   void balance_inside_regions(std::vector<Level>& levels, std::size_t l) const
   {
     const auto t0 = std::chrono::steady_clock::now();
@@ -917,7 +919,9 @@ private:
     for(std::size_t c = l + 1;; ++c)   // region[v]: v's node on level c
     {
       route_inside_regions(lv, region, levels[c].n, excess);
-      if(c + 1 >= levels.size()) break;
+      // regions of more than max_routing_region nodes on average: their searches cost more than
+      // they save the certificate
+      if(c + 1 >= levels.size() || lv.n > max_routing_region * levels[c + 1].n) break;
       for(std::size_t v = 0; v < lv.n; ++v) region[v] = levels[c].parent[region[v]];
     }
     if(verbose_)
@@ -1636,6 +1640,7 @@ private:
   }
 
   static constexpr std::size_t npos = std::size_t(-1);
+  static constexpr std::size_t max_routing_region = 512;   // balance_inside_regions()
   // Beyond 2^42 the scaled jumps start to carry the rounding noise of the doubles (the gauge-fixed
   // jumps are sums of differences of values of order 1..100, whose ulp is 2^-52..2^-46): on the
   // demo torus 155 arcs keep a nonzero cost at 2^42, 256 at 2^44, 463 at 2^46. That noise only
