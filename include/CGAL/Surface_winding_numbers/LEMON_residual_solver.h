@@ -144,7 +144,9 @@ public:
   each finer level re-solves only a band of nodes around the jumps of the coarser answer (every
   connected piece of the rest contracted to one node; along the curve, where the jumps do not move,
   only their faces, see `set_narrow_curve_bands()`). The optimal flows of these network simplex
-  runs are carried down the hierarchy, and on the finest level a maximum flow completes them into
+  runs are carried down the hierarchy (on each level, the imbalances left by sharing a coarse arc's
+  flow among its fine arcs are routed inside each cluster and each small region of the coarser
+  levels first), and on the finest level a maximum flow completes them into
   a circulation within the subdifferentials of the objective (push-relabel on the flat arrays of
   `internal::Warm_push_relabel`, handed over to Boost.Graph's Boykov-Kolmogorov beyond a work
   budget, see `set_max_flow_budget()`; after a descent step on levels of 500,000 nodes or more both
@@ -154,7 +156,8 @@ public:
   exists, the minimum cut is a set of faces whose shifts can all rise with a negative slope of the
   objective (the steepest such set): the shifts of that set rise by the amount that minimizes the
   objective along that direction (an exact line search over the breakpoints of the arcs that
-  cross the set's border), and the certificate is tried again from its previous flow. These
+  cross the set's border), and the certificate is tried again from its previous flow, on the
+  maximum-flow graphs of the level's first certificate (kept until the level is done). These
   descent steps are taken on every level (at most `descent_steps()` per level, see
   `set_descent_steps()`). If the certificate of the finest level is still refused, a band around
   the border of the set (and only there) is re-solved by network simplex, which lowers the
