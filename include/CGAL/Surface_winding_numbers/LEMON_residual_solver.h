@@ -905,38 +905,43 @@ private:
   // coarse node's (0: the coarse flow is a circulation); they are routed along the arcs inside the
   // cluster, whose jump is 0 (subdifferential [-w, w]), by augmenting paths, then along the arcs
   // inside the clusters of clusters (each region of a coarser level adds up to 0 as well), and so
-  // on up the hierarchy, while the regions have at most 512 nodes of the level on average. What
+  // on up the hierarchy, while the regions have at most 512 nodes of the level on average (the
+  // same is done again for the first certificate of the level, after its band solve). What
   // remains is left to the maximum flow of the certificate, which would otherwise have to route
   // every imbalance of the level. On the 1.15M-face level of benchmark/residual_solvers.md the
   // imbalanced nodes go from 584,000 to 26,000 in 1.5 s (12,000 in 4.8 s with the regions of 956
   // nodes: not worth it), and the first certificate takes 12.5 s instead of 19-21 s.
-  void balance_inside_regions(std::vector<Level>& levels, std::size_t l) const
+  // With `lower` and `upper` (the subdifferentials at the level's answer), every arc inside a region
+  // takes part, within those bounds, and x is the flow to route (the certificate's starting flow).
+  void balance_inside_regions(const std::vector<Level>& levels, std::size_t l, std::vector<Int>& x,
+                              const std::vector<Int>* lower = nullptr, const std::vector<Int>* upper = nullptr) const
   {
     const auto t0 = std::chrono::steady_clock::now();
-    Level& lv = levels[l];
+    const Level& lv = levels[l];
     std::vector<Int> excess;
-    node_supply(lv, lv.x, excess);
+    node_supply(lv, x, excess);
     auto imbalanced = [&] { return lv.n - std::size_t(std::count(excess.begin(), excess.end(), Int(0))); };
     const std::size_t before = verbose_ ? imbalanced() : 0;
     std::vector<std::size_t> region = lv.parent;
     for(std::size_t c = l + 1;; ++c)   // region[v]: v's node on level c
     {
-      route_inside_regions(lv, region, levels[c].n, excess);
+      route_inside_regions(lv, region, levels[c].n, excess, x, lower, upper);
       // regions of more than max_routing_region nodes on average: their searches cost more than
       // they save the certificate
       if(c + 1 >= levels.size() || lv.n > max_routing_region * levels[c + 1].n) break;
       for(std::size_t v = 0; v < lv.n; ++v) region[v] = levels[c].parent[region[v]];
     }
     if(verbose_)
-      std::cerr << "[swn] multilevel: flow carried down to level " << l << ": " << before << " imbalanced nodes, "
+      std::cerr << "[swn] multilevel: " << (lower ? "certificate's flow" : "flow carried down") << " on level " << l << ": " << before << " imbalanced nodes, "
                 << imbalanced() << " after routing inside the regions of the coarser levels (" << seconds(t0) << " s)\n";
   }
 
   // augmenting paths inside each region (region[v] < nr), from every excess to the deficits
   // (breadth first, along arcs inside the region with room left: their jump is 0, so their flow
   // may lie anywhere in [-w, w])
-  static void route_inside_regions(Level& lv, const std::vector<std::size_t>& region, std::size_t nr,
-                                   std::vector<Int>& excess)
+  static void route_inside_regions(const Level& lv, const std::vector<std::size_t>& region, std::size_t nr,
+                                   std::vector<Int>& excess, std::vector<Int>& x, const std::vector<Int>* lower,
+                                   const std::vector<Int>* upper)
   {
     // the nodes of each region that have an excess, and the arcs inside the regions at each node
     std::vector<std::size_t> first(nr + 1, 0), member;
@@ -950,7 +955,7 @@ private:
         if(excess[v] > 0) member[fill[region[v]]++] = v;
     }
     if(member.empty()) return;
-    auto inside = [&](const Int_arc& e) { return region[e.L] == region[e.R] && contractible(e); };
+    auto inside = [&](const Int_arc& e) { return region[e.L] == region[e.R] && (lower != nullptr || contractible(e)); };
     std::vector<std::size_t> afirst(lv.n + 1, 0), aarc;
     for(const Int_arc& e : lv.arcs)
       if(inside(e)) { ++afirst[e.L + 1]; ++afirst[e.R + 1]; }
@@ -961,10 +966,12 @@ private:
       for(std::size_t i = 0; i < lv.arcs.size(); ++i)
         if(inside(lv.arcs[i])) { aarc[fill[lv.arcs[i].L]++] = i; aarc[fill[lv.arcs[i].R]++] = i; }
     }
-    // room on arc i from its end `from` to the other: x can rise to w (L -> R) or fall to -w
+    // room on arc i from its end `from` to the other: x can rise to its upper bound (L -> R) or fall
+    // to its lower one; [-w, w] without bounds (jump 0)
     auto room = [&](std::size_t i, std::size_t from) {
       const Int_arc& e = lv.arcs[i];
-      return from == e.L ? e.w - lv.x[i] : lv.x[i] + e.w;
+      if(lower != nullptr) return from == e.L ? (*upper)[i] - x[i] : x[i] - (*lower)[i];
+      return from == e.L ? e.w - x[i] : x[i] + e.w;
     };
     // a search that finds no deficit marks what it reached as dead: a set that cannot reach a deficit
     // never will (an augmenting path never enters it, so no arc out of it gains room)
@@ -1005,7 +1012,7 @@ private:
         {
           const std::size_t i = pred_arc[y];
           const std::size_t u = lv.arcs[i].L == y ? lv.arcs[i].R : lv.arcs[i].L;
-          lv.x[i] += u == lv.arcs[i].L ? d : -d;
+          x[i] += u == lv.arcs[i].L ? d : -d;
           y = u;
         }
         excess[s] -= d;
@@ -1331,8 +1338,10 @@ private:
   //  * otherwise push-relabel within a work budget, then Boykov-Kolmogorov from where it stopped.
   // The barrier does not depend on which one finished (mark_barrier()). lv.x gets the flow found
   // (balanced on success).
-  bool repair_flow(Level& lv, Int U, const std::vector<Int>& pi, std::vector<char>& barrier, bool after_descent)
+  bool repair_flow(std::vector<Level>& levels, std::size_t l, Int U, const std::vector<Int>& pi,
+                   std::vector<char>& barrier, bool after_descent)
   {
+    Level& lv = levels[l];
     const std::size_t n = lv.n, na = lv.arcs.size();
     if(!lv.workspace) lv.workspace.reset(new Certificate_workspace());
     Certificate_workspace& ws = *lv.workspace;
@@ -1349,6 +1358,10 @@ private:
       const Int start = i < lv.x.size() ? lv.x[i] : 0;
       x0[i] = (std::min)(upper[i], (std::max)(lower[i], start));
     }
+    // the band solved on the level changed the flows on its arcs, which leaves imbalances at the
+    // border of the pieces: routed inside the regions first as well, within the subdifferentials
+    // (not after a descent step: the certificate then starts from a maximum flow)
+    if(!after_descent && l + 1 < levels.size()) balance_inside_regions(levels, l, x0, &lower, &upper);
     node_supply(lv, x0, ws.supply);
     barrier.assign(n, 0);
     ++stats_.certificates;
@@ -1471,7 +1484,7 @@ private:
       for(std::size_t v = 0; v < levels[l].n; ++v) fine[v] = pi[levels[l].parent[v]];
       pi.swap(fine);
       prolong_flow(levels[l], levels[l + 1]);
-      balance_inside_regions(levels, l);
+      balance_inside_regions(levels, l, levels[l].x);
       if(!refine(levels[l], U, pi, no_seed, l == 0 ? finest_band_radius_ : band_radius_, true, narrow, why)) return false;
       std::vector<Int>().swap(levels[l + 1].x);
       levels[l + 1].workspace.reset();
@@ -1500,7 +1513,7 @@ private:
     for(;;)
     {
       const auto t0 = std::chrono::steady_clock::now();
-      const bool certified = repair_flow(lv, U, pi, barrier, after_descent);
+      const bool certified = repair_flow(levels, l, U, pi, barrier, after_descent);
       after_descent = false;
       if(verbose_)
       {
