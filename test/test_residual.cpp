@@ -281,6 +281,18 @@ SWN::Residual_problem two_tori_problem()
   return pipeline_problem(m, curves);
 }
 
+// random imbalances of the nodes of a random max-flow problem that sum to zero (added to b)
+void add_zero_sum_imbalances(std::mt19937& gen, std::vector<long long>& b)
+{
+  const std::size_t n = b.size();
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    const long long d = (long long)(gen() % 9);
+    b[gen() % n] += d;
+    b[gen() % n] -= d;
+  }
+}
+
 } // namespace
 
 // ---------------------------------------------------------------------------------------------
@@ -566,12 +578,7 @@ TEST(LemonResidual, MaximumFlowsReusedOnTheSameGraphAnswerAsNewOnes)
         cap[i] = Int(gen() % 12);
         back[i] = gen() % 3 == 0 ? 0 : Int(gen() % 12);
       }
-      for(std::size_t k = 0; k < n; ++k)
-      {
-        const Int d = Int(gen() % 9);
-        b[gen() % n] += d;
-        b[gen() % n] -= d;
-      }
+      add_zero_sum_imbalances(gen, b);
       PR pr_new(n);
       BK bk_new(n);
       for(std::size_t i = 0; i < m; ++i)
@@ -634,12 +641,7 @@ TEST(LemonResidual, WarmPushRelabelIsAMaximumFlow)
       cap[i] = Int(gen() % 12);
       back[i] = gen() % 3 == 0 ? 0 : Int(gen() % 12);
     }
-    for(std::size_t k = 0; k < n; ++k)   // imbalances that sum to zero
-    {
-      const Int d = Int(gen() % 9);
-      b[gen() % n] += d;
-      b[gen() % n] -= d;
-    }
+    add_zero_sum_imbalances(gen, b);
     PR pr(n);
     for(std::size_t i = 0; i < m; ++i) pr.add_arc(tail[i], head[i], cap[i], back[i]);
     for(std::size_t v = 0; v < n; ++v) pr.set_terminal(v, b[v]);

@@ -724,16 +724,21 @@ private:
     }
   }
 
-  // node -> incident arcs
+  // node -> incident arcs (those for which `keep` holds)
   struct Adjacency
   {
     std::vector<std::size_t> first, arc;
-    Adjacency(std::size_t n, const std::vector<Int_arc>& arcs) : first(n + 1, 0), arc(2 * arcs.size())
+    Adjacency(std::size_t n, const std::vector<Int_arc>& arcs) : Adjacency(n, arcs, [](const Int_arc&) { return true; }) {}
+    template <class Keep>
+    Adjacency(std::size_t n, const std::vector<Int_arc>& arcs, Keep keep) : first(n + 1, 0)
     {
-      for(const Int_arc& e : arcs) { ++first[e.L + 1]; ++first[e.R + 1]; }
+      for(const Int_arc& e : arcs)
+        if(keep(e)) { ++first[e.L + 1]; ++first[e.R + 1]; }
       for(std::size_t v = 0; v < n; ++v) first[v + 1] += first[v];
+      arc.resize(first[n]);
       std::vector<std::size_t> fill(first.begin(), first.end() - 1);
-      for(std::size_t i = 0; i < arcs.size(); ++i) { arc[fill[arcs[i].L]++] = i; arc[fill[arcs[i].R]++] = i; }
+      for(std::size_t i = 0; i < arcs.size(); ++i)
+        if(keep(arcs[i])) { arc[fill[arcs[i].L]++] = i; arc[fill[arcs[i].R]++] = i; }
     }
   };
 
@@ -955,17 +960,9 @@ private:
         if(excess[v] > 0) member[fill[region[v]]++] = v;
     }
     if(member.empty()) return;
-    auto inside = [&](const Int_arc& e) { return region[e.L] == region[e.R] && (lower != nullptr || contractible(e)); };
-    std::vector<std::size_t> afirst(lv.n + 1, 0), aarc;
-    for(const Int_arc& e : lv.arcs)
-      if(inside(e)) { ++afirst[e.L + 1]; ++afirst[e.R + 1]; }
-    for(std::size_t v = 0; v < lv.n; ++v) afirst[v + 1] += afirst[v];
-    aarc.resize(afirst[lv.n]);
-    {
-      std::vector<std::size_t> fill(afirst.begin(), afirst.end() - 1);
-      for(std::size_t i = 0; i < lv.arcs.size(); ++i)
-        if(inside(lv.arcs[i])) { aarc[fill[lv.arcs[i].L]++] = i; aarc[fill[lv.arcs[i].R]++] = i; }
-    }
+    const Adjacency inside(lv.n, lv.arcs, [&](const Int_arc& e) {
+      return region[e.L] == region[e.R] && (lower != nullptr || contractible(e));
+    });
     // room on arc i from its end `from` to the other: x can rise to its upper bound (L -> R) or fall
     // to its lower one; [-w, w] without bounds (jump 0)
     auto room = [&](std::size_t i, std::size_t from) {
@@ -987,9 +984,9 @@ private:
         for(std::size_t q = 0; q < queue.size() && t == npos; ++q)
         {
           const std::size_t u = queue[q];
-          for(std::size_t j = afirst[u]; j < afirst[u + 1]; ++j)
+          for(std::size_t j = inside.first[u]; j < inside.first[u + 1]; ++j)
           {
-            const std::size_t i = aarc[j];
+            const std::size_t i = inside.arc[j];
             const std::size_t y = lv.arcs[i].L == u ? lv.arcs[i].R : lv.arcs[i].L;
             if(seen[y] || dead[y] || room(i, u) <= 0) continue;
             seen[y] = 1;
