@@ -46,20 +46,21 @@ public:
   {
     if(2 * (tail_.size() + 2) >= std::size_t((std::numeric_limits<Index>::max)()))
       throw std::length_error("max flow: too many arcs");
+    if(built_) throw std::logic_error("max flow: arcs added after the first run");
     tail_.push_back(Index(u)); tail_.push_back(Index(v));
-    r_.push_back(c_uv); r_.push_back(c_vu);
-    return tail_.size() / 2 - 1;
+    cap0_.push_back(c_uv); cap0_.push_back(c_vu);
+    return cap0_.size() / 2 - 1;
   }
 
   // arc i gets the residual capacities c_uv and c_vu of a new problem on the same graph (the
   // arrays built by the first run() are kept: no allocation)
   void reset_arc(std::size_t i, Int c_uv, Int c_vu)
   {
-    r_[2 * i] = c_uv;
-    r_[2 * i + 1] = c_vu;
+    cap0_[2 * i] = c_uv;
+    cap0_[2 * i + 1] = c_vu;
   }
   // the number of arcs added
-  std::size_t number_of_arcs() const { return r_.size() / 2; }
+  std::size_t number_of_arcs() const { return cap0_.size() / 2; }
 
   // imbalance of v: t > 0 an excess, t < 0 a deficit
   void set_terminal(std::size_t v, Int t) { b_[v] = t; }
@@ -108,7 +109,7 @@ public:
   }
 
   // net flow u -> v pushed on arc i
-  Int flow(std::size_t i) const { return cap0_[2 * i] - r_[2 * i]; }
+  Int flow(std::size_t i) const { return cap0_[2 * i] - half_[pos_[2 * i]].r; }
 
   // after run() returned CUT: true if v can no longer reach a deficit (the source side of a
   // minimum cut)
@@ -117,24 +118,31 @@ public:
 private:
   static constexpr Index NONE = (std::numeric_limits<Index>::max)();
 
-  // the arcs grouped by tail, once; later runs only copy the capacities
+  // the half-arcs laid out by tail, once (stable: each node's arcs in the order they were added), each
+  // with its head and the position of its reverse next to its residual capacity, so that a node's
+  // scan reads one contiguous block; later runs only scatter the new capacities
   void build()
   {
-    cap0_ = r_;
-    if(built_) return;
-    built_ = true;
-    const std::size_t na = tail_.size();
-    head_.resize(na);
-    for(std::size_t a = 0; a < na; ++a) head_[a] = tail_[a ^ 1];
-    first_.assign(n_ + 1, 0);
-    for(std::size_t a = 0; a < na; ++a) ++first_[tail_[a] + 1];
-    for(std::size_t v = 0; v < n_; ++v) first_[v + 1] += first_[v];
-    out_.resize(na);
-    std::vector<Index> fill(first_.begin(), first_.end() - 1);
-    for(std::size_t a = 0; a < na; ++a) out_[fill[tail_[a]]++] = Index(a);
-    std::vector<Index>().swap(tail_);
+    if(!built_)
+    {
+      built_ = true;
+      const std::size_t na = tail_.size();
+      first_.assign(n_ + 1, 0);
+      for(std::size_t a = 0; a < na; ++a) ++first_[tail_[a] + 1];
+      for(std::size_t v = 0; v < n_; ++v) first_[v + 1] += first_[v];
+      pos_.resize(na);
+      std::vector<Index> fill(first_.begin(), first_.end() - 1);
+      for(std::size_t a = 0; a < na; ++a) pos_[a] = fill[tail_[a]]++;
+      half_.resize(na);
+      for(std::size_t a = 0; a < na; ++a)
+      {
+        half_[pos_[a]].head = tail_[a ^ 1];
+        half_[pos_[a]].rev = pos_[a ^ 1];
+      }
+      std::vector<Index>().swap(tail_);
+    }
+    for(std::size_t a = 0; a < cap0_.size(); ++a) half_[pos_[a]].r = cap0_[a];
   }
-
   // an active node is in exactly one bucket (its label's): labels change only in discharge(), which
   // pops the node first, and in global_relabel(), which rebuilds the buckets
   void activate(Index v)
@@ -158,9 +166,9 @@ private:
       const Index w = queue_[h];
       for(Index k = first_[w]; k < first_[w + 1]; ++k)
       {
-        const Index a = out_[k];   // w -> u; the arc u -> w is a ^ 1
-        const Index u = head_[a];
-        if(label_[u] != dead || r_[a ^ 1] == 0) continue;
+        const Half& h = half_[k];   // w -> u; the arc u -> w is at h.rev
+        const Index u = h.head;
+        if(label_[u] != dead || half_[h.rev].r == 0) continue;
         label_[u] = label_[w] + 1;
         queue_.push_back(u);
       }
@@ -185,13 +193,13 @@ private:
       const Index end = first_[v + 1];
       for(; k < end; ++k)
       {
-        const Index a = out_[k];
-        if(r_[a] == 0) continue;
-        const Index w = head_[a];
+        Half& h = half_[k];
+        if(h.r == 0) continue;
+        const Index w = h.head;
         if(label_[w] + 1 != label_[v]) continue;
-        const Int d = (std::min)(b_[v], r_[a]);
-        r_[a] -= d;
-        r_[a ^ 1] += d;
+        const Int d = (std::min)(b_[v], h.r);
+        h.r -= d;
+        half_[h.rev].r += d;
         b_[v] -= d;
         const bool was_active = b_[w] > 0;
         b_[w] += d;
@@ -203,7 +211,7 @@ private:
       // relabel: one more than the lowest neighbour along a residual arc
       Index lowest = dead;
       for(Index j = first_[v]; j < end; ++j)
-        if(r_[out_[j]] > 0) lowest = (std::min)(lowest, label_[head_[out_[j]]]);
+        if(half_[j].r > 0) lowest = (std::min)(lowest, label_[half_[j].head]);
       work += end - first_[v] + 12;
       current_[v] = first_[v];
       label_[v] = lowest >= dead - 1 ? dead : lowest + 1;
@@ -212,9 +220,18 @@ private:
     return work;
   }
 
+  struct Half
+  {
+    Int r;       // residual capacity
+    Index head;
+    Index rev;   // position of the reverse half-arc
+  };
+
   std::size_t n_;
-  std::vector<Int> b_, r_, cap0_;
-  std::vector<Index> tail_, head_, first_, out_;
+  std::vector<Int> b_, cap0_;        // imbalances; capacities as given, by arc (2i: u -> v, 2i + 1: v -> u)
+  std::vector<Index> tail_, pos_;    // by arc: tail (until the first run), position in half_
+  std::vector<Index> first_;         // by node: its first position in half_
+  std::vector<Half> half_;
   std::vector<Index> label_, current_, queue_;
   std::vector<Index> bucket_, next_;   // active nodes per label, as singly linked stacks
   Index highest_ = NONE;
