@@ -81,6 +81,10 @@ public:
     current_.assign(first_.begin(), first_.end() - 1);
     bucket_.assign(n_, NONE);
     next_.assign(n_, NONE);
+    count_.assign(n_, 0);
+    level_.assign(n_, NONE);
+    before_.assign(n_, NONE);
+    after_.assign(n_, NONE);
     global_relabel();
     // global relabeling after about as much work as a few sweeps over the graph
     const std::size_t relabel_period = 6 * n_ + first_[n_] / 2;
@@ -152,6 +156,55 @@ private:
     if(highest_ == NONE || label_[v] > highest_) highest_ = label_[v];
   }
 
+  // v joins the list of the nodes with its label (< n)
+  void link(Index v)
+  {
+    const Index d = label_[v];
+    before_[v] = NONE;
+    after_[v] = level_[d];
+    if(after_[v] != NONE) before_[after_[v]] = v;
+    level_[d] = v;
+    ++count_[d];
+    if(d > top_) top_ = d;
+  }
+
+  // v leaves the list of the nodes with its label (< n)
+  void unlink(Index v)
+  {
+    const Index d = label_[v];
+    if(before_[v] != NONE) after_[before_[v]] = after_[v];
+    else level_[d] = after_[v];
+    if(after_[v] != NONE) before_[after_[v]] = before_[v];
+    --count_[d];
+  }
+
+  // v (not in a bucket) gets the higher label `fresh`. If v was the last node labelled d, no node
+  // above d can reach a deficit any more (a residual arc lowers the label by at most one): the gap
+  // heuristic puts all of them, v included, out of play at once. Returns the work.
+  std::size_t relabel(Index v, Index fresh)
+  {
+    const Index dead = Index(n_), d = label_[v];
+    unlink(v);
+    if(count_[d] != 0 || fresh == dead)
+    {
+      label_[v] = fresh;
+      if(fresh != dead) link(v);
+      return 0;
+    }
+    label_[v] = dead;
+    std::size_t work = top_ - d;
+    for(Index k = d + 1; k <= top_; ++k)
+    {
+      for(Index u = level_[k]; u != NONE; u = after_[u]) { label_[u] = dead; ++work; }
+      level_[k] = NONE;
+      count_[k] = 0;
+      bucket_[k] = NONE;
+    }
+    top_ = d;
+    if(highest_ != NONE && highest_ > d) highest_ = d;
+    return work;
+  }
+
   // exact distances to the nodes with a deficit along residual arcs (breadth-first, backwards);
   // nodes that cannot reach one get the label n (they are out of the game)
   void global_relabel()
@@ -174,11 +227,16 @@ private:
       }
     }
     std::fill(bucket_.begin(), bucket_.end(), NONE);
+    std::fill(count_.begin(), count_.end(), 0);
+    std::fill(level_.begin(), level_.end(), NONE);
     highest_ = NONE;
+    top_ = 0;
     for(std::size_t v = 0; v < n_; ++v)
     {
       current_[v] = first_[v];
-      if(b_[v] > 0 && label_[v] < dead) activate(Index(v));
+      if(label_[v] == dead) continue;
+      link(Index(v));
+      if(b_[v] > 0) activate(Index(v));
     }
   }
 
@@ -214,7 +272,7 @@ private:
         if(half_[j].r > 0) lowest = (std::min)(lowest, label_[half_[j].head]);
       work += end - first_[v] + 12;
       current_[v] = first_[v];
-      label_[v] = lowest >= dead - 1 ? dead : lowest + 1;
+      work += relabel(v, lowest >= dead - 1 ? dead : lowest + 1);
       if(label_[v] == dead) break;
     }
     return work;
@@ -234,7 +292,8 @@ private:
   std::vector<Half> half_;
   std::vector<Index> label_, current_, queue_;
   std::vector<Index> bucket_, next_;   // active nodes per label, as singly linked stacks
-  Index highest_ = NONE;
+  std::vector<Index> count_, level_, before_, after_;   // every live node per label (doubly linked), for the gap heuristic
+  Index highest_ = NONE, top_ = 0;    // highest label with an active node; no live node is above top_
   bool built_ = false;
 };
 
