@@ -26,9 +26,11 @@ namespace internal {
 //    correction.
 //  * Otherwise the nodes that can no longer reach any deficit (source_side()) are the source side
 //    of a minimum cut; after a global relabeling they are all out of play at once.
-// Capacities are integers (`Int` signed). On some certificates of the residual solver push-relabel
-// needs hundreds of global relabelings (433 on a level of 188k nodes, 4x the time of
-// Boykov-Kolmogorov; benchmark/residual_solvers.md), hence the work budget of run().
+// With the gap heuristic: when a relabeling leaves no node with some label, every node above it is
+// put out of play at once (without it, push-relabel needed hundreds of global relabelings on the
+// refused certificates of the residual solver, 433 on a level of 188k nodes, 4x the time of
+// Boykov-Kolmogorov; benchmark/residual_solvers.md). Capacities are integers (`Int` signed); run()
+// takes a work budget.
 template <typename Int>
 class Warm_push_relabel
 {
@@ -82,6 +84,7 @@ public:
     bucket_.assign(n_, NONE);
     next_.assign(n_, NONE);
     count_.assign(n_, 0);
+    gaps_ = 0;
     level_.assign(n_, NONE);
     before_.assign(n_, NONE);
     after_.assign(n_, NONE);
@@ -111,6 +114,9 @@ public:
       if(b_[v] > 0) { global_relabel(); return CUT; }   // the labels now mark the cut exactly
     return BALANCED;
   }
+
+  // the number of gaps found by the last run() (see relabel())
+  std::size_t gaps() const { return gaps_; }
 
   // net flow u -> v pushed on arc i
   Int flow(std::size_t i) const { return cap0_[2 * i] - half_[pos_[2 * i]].r; }
@@ -192,6 +198,7 @@ private:
       return 0;
     }
     label_[v] = dead;
+    ++gaps_;
     std::size_t work = top_ - d;
     for(Index k = d + 1; k <= top_; ++k)
     {
@@ -293,7 +300,8 @@ private:
   std::vector<Index> label_, current_, queue_;
   std::vector<Index> bucket_, next_;   // active nodes per label, as singly linked stacks
   std::vector<Index> count_, level_, before_, after_;   // every live node per label (doubly linked), for the gap heuristic
-  Index highest_ = NONE, top_ = 0;    // highest label with an active node; no live node is above top_
+  Index highest_ = NONE, top_ = 0;
+  std::size_t gaps_ = 0;    // highest label with an active node; no live node is above top_
   bool built_ = false;
 };
 
