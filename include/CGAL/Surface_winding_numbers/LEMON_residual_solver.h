@@ -910,12 +910,15 @@ private:
   // coarse node's (0: the coarse flow is a circulation); they are routed along the arcs inside the
   // cluster, whose jump is 0 (subdifferential [-w, w]), by augmenting paths, then along the arcs
   // inside the clusters of clusters (each region of a coarser level adds up to 0 as well), and so
-  // on up the hierarchy, while the regions have at most 512 nodes of the level on average (the
-  // same is done again for the first certificate of the level, after its band solve). What
-  // remains is left to the maximum flow of the certificate, which would otherwise have to route
-  // every imbalance of the level. On the 1.15M-face level of benchmark/residual_solvers.md the
-  // imbalanced nodes go from 584,000 to 26,000 in 1.5 s (12,000 in 4.8 s with the regions of 956
-  // nodes: not worth it), and the first certificate takes 12.5 s instead of 19-21 s.
+  // on up the hierarchy, while the regions have at most 512 nodes of the level on average and the
+  // searches of a region level stay within 16 arc scans per arc of the level (the same is done
+  // again for the first certificate of the level, after its band solve). What remains is left to
+  // the maximum flow of the certificate, which would otherwise have to route every imbalance of the
+  // level. On the 1.15M-face level of benchmark/residual_solvers.md the imbalanced nodes go from
+  // 584,000 to 26,000 in 1.5 s, and the first certificate took 12.5 s instead of 19-21 s (before
+  // push-relabel had the gap heuristic). The budget: on a 751k-face level the searches of the 4th
+  // and 5th region levels cost 196 and 302 scans per arc (2 and 4.8 s) for 21,800 -> 6,100
+  // imbalanced nodes, more than they saved the certificate (residual 25.2 s; 15.3 s with the budget).
   // With `lower` and `upper` (the subdifferentials at the level's answer), every arc inside a region
   // takes part, within those bounds, and x is the flow to route (the certificate's starting flow).
   void balance_inside_regions(const std::vector<Level>& levels, std::size_t l, std::vector<Int>& x,
@@ -928,25 +931,30 @@ private:
     auto imbalanced = [&] { return lv.n - std::size_t(std::count(excess.begin(), excess.end(), Int(0))); };
     const std::size_t before = verbose_ ? imbalanced() : 0;
     std::vector<std::size_t> region = lv.parent;
+    const std::size_t work_limit = max_routing_work * lv.arcs.size();
+    std::size_t depth = 0, work = 0;
     for(std::size_t c = l + 1;; ++c)   // region[v]: v's node on level c
     {
-      route_inside_regions(lv, region, levels[c].n, excess, x, lower, upper);
-      // regions of more than max_routing_region nodes on average: their searches cost more than
-      // they save the certificate
-      if(c + 1 >= levels.size() || lv.n > max_routing_region * levels[c + 1].n) break;
+      work = route_inside_regions(lv, region, levels[c].n, excess, x, lower, upper, work_limit);
+      ++depth;
+      // regions of more than max_routing_region nodes on average, or searches over their budget:
+      // the coarser regions cost more than they save the certificate
+      if(work > work_limit || c + 1 >= levels.size() || lv.n > max_routing_region * levels[c + 1].n) break;
       for(std::size_t v = 0; v < lv.n; ++v) region[v] = levels[c].parent[region[v]];
     }
     if(verbose_)
       std::cerr << "[swn] multilevel: " << (lower ? "certificate's flow" : "flow carried down") << " on level " << l << ": " << before << " imbalanced nodes, "
-                << imbalanced() << " after routing inside the regions of the coarser levels (" << seconds(t0) << " s)\n";
+                << imbalanced() << " after routing inside the regions of " << depth << " coarser level(s)"
+                << (work > work_limit ? ", the last one stopped by its budget" : "") << " (" << seconds(t0) << " s)\n";
   }
 
   // augmenting paths inside each region (region[v] < nr), from every excess to the deficits
   // (breadth first, along arcs inside the region with room left: their jump is 0, so their flow
-  // may lie anywhere in [-w, w])
-  static void route_inside_regions(const Level& lv, const std::vector<std::size_t>& region, std::size_t nr,
+  // may lie anywhere in [-w, w]); stops once more than `work_limit` arcs were scanned. Returns the
+  // arcs scanned.
+  static std::size_t route_inside_regions(const Level& lv, const std::vector<std::size_t>& region, std::size_t nr,
                                    std::vector<Int>& excess, std::vector<Int>& x, const std::vector<Int>* lower,
-                                   const std::vector<Int>* upper)
+                                   const std::vector<Int>* upper, std::size_t work_limit)
   {
     // the nodes of each region that have an excess, and the arcs inside the regions at each node
     std::vector<std::size_t> first(nr + 1, 0), member;
@@ -959,7 +967,8 @@ private:
       for(std::size_t v = 0; v < lv.n; ++v)
         if(excess[v] > 0) member[fill[region[v]]++] = v;
     }
-    if(member.empty()) return;
+    if(member.empty()) return 0;
+    std::size_t work = 0;
     const Adjacency inside(lv.n, lv.arcs, [&](const Int_arc& e) {
       return region[e.L] == region[e.R] && (lower != nullptr || contractible(e));
     });
@@ -977,6 +986,7 @@ private:
     for(std::size_t s : member)
       while(excess[s] > 0 && !dead[s])
       {
+        if(work > work_limit) return work;
         // breadth-first search for a deficit in the region along arcs with room
         queue.assign(1, s);
         seen[s] = 1;
@@ -984,6 +994,7 @@ private:
         for(std::size_t q = 0; q < queue.size() && t == npos; ++q)
         {
           const std::size_t u = queue[q];
+          work += inside.first[u + 1] - inside.first[u];
           for(std::size_t j = inside.first[u]; j < inside.first[u + 1]; ++j)
           {
             const std::size_t i = inside.arc[j];
@@ -1015,6 +1026,7 @@ private:
         excess[s] -= d;
         excess[t] += d;
       }
+    return work;
   }
 
   // one-sided derivatives of f(J) = w |J| + U dist(J, [lo, up])
@@ -1654,6 +1666,7 @@ private:
 
   static constexpr std::size_t npos = std::size_t(-1);
   static constexpr std::size_t max_routing_region = 512;   // balance_inside_regions()
+  static constexpr std::size_t max_routing_work = 16;      // balance_inside_regions(): arc scans per arc and region level
   // Beyond 2^42 the scaled jumps start to carry the rounding noise of the doubles (the gauge-fixed
   // jumps are sums of differences of values of order 1..100, whose ulp is 2^-52..2^-46): on the
   // demo torus 155 arcs keep a nonzero cost at 2^42, 256 at 2^44, 463 at 2^46. That noise only
