@@ -81,13 +81,14 @@ public:
     const Index dead = Index(n_);
     label_.assign(n_, 0);
     current_.assign(first_.begin(), first_.end() - 1);
-    bucket_.assign(n_, NONE);
     next_.assign(n_, NONE);
-    count_.assign(n_, 0);
+    // sized only: global_relabel() fills bucket_, count_ and level_, and link() sets before_ and after_
+    bucket_.resize(n_);
+    count_.resize(n_);
+    level_.resize(n_);
+    before_.resize(n_);
+    after_.resize(n_);
     gaps_ = 0;
-    level_.assign(n_, NONE);
-    before_.assign(n_, NONE);
-    after_.assign(n_, NONE);
     global_relabel();
     // global relabeling after about as much work as a few sweeps over the graph
     const std::size_t relabel_period = 6 * n_ + first_[n_] / 2;
@@ -153,6 +154,7 @@ private:
     }
     for(std::size_t a = 0; a < cap0_.size(); ++a) half_[pos_[a]].r = cap0_[a];
   }
+
   // an active node is in exactly one bucket (its label's): labels change only in discharge(), which
   // pops the node first, and in global_relabel(), which rebuilds the buckets
   void activate(Index v)
@@ -184,9 +186,11 @@ private:
     --count_[d];
   }
 
-  // v (not in a bucket) gets the higher label `fresh`. If v was the last node labelled d, no node
-  // above d can reach a deficit any more (a residual arc lowers the label by at most one): the gap
-  // heuristic puts all of them, v included, out of play at once. Returns the work.
+  // v (not in a bucket) gets the higher label `fresh`. If v was the last node labelled d and keeps a
+  // residual arc to a live node, no node above d can reach a deficit any more (a residual arc lowers
+  // the label by at most one): the gap heuristic puts all of them, v included, out of play at once.
+  // (A v without such an arc just dies; the next gap or global relabeling catches the others.)
+  // Returns the work.
   std::size_t relabel(Index v, Index fresh)
   {
     const Index dead = Index(n_), d = label_[v];
@@ -300,8 +304,8 @@ private:
   std::vector<Index> label_, current_, queue_;
   std::vector<Index> bucket_, next_;   // active nodes per label, as singly linked stacks
   std::vector<Index> count_, level_, before_, after_;   // every live node per label (doubly linked), for the gap heuristic
-  Index highest_ = NONE, top_ = 0;
-  std::size_t gaps_ = 0;    // highest label with an active node; no live node is above top_
+  Index highest_ = NONE, top_ = 0;   // highest label with an active node; no live node is above top_
+  std::size_t gaps_ = 0;
   bool built_ = false;
 };
 
