@@ -258,10 +258,10 @@ int main(int argc, char** argv)
     const Lemon::Statistics& st = lemon.statistics();
     if(k == 0) best_objective = P.objective(sigma);
     std::printf("residual %-36s ok %d  best of %d %8.3f s (build %.3f, flow %.3f, recover %.3f)  objective %.13f  violation %.1e  "
-                "nodes %zu  network arcs %zu  nonzero costs %zu  scale 2^%d/2^%d  certified %d  levels %zu  refinements %zu  descent steps %zu  largest band %zu  max flows %zu (%zu finished by BK)\n",
+                "nodes %zu  network arcs %zu  nonzero costs %zu  scale 2^%d/2^%d  certified %d  levels %zu  refinements %zu  descent steps %zu (%zu pieces)  largest band %zu  max flows %zu (%zu finished by BK)\n",
                 names[k], int(ok), repeat, best, st.time_build, st.time_solve, st.time_recover, P.objective(sigma),
                 P.max_violation(sigma), st.nodes, st.network_arcs, st.nonzero_cost_arcs, st.cost_exponent,
-                st.capacity_exponent, int(st.certified), st.levels, st.refinements, st.descent_steps, st.largest_band, st.certificates, st.max_flow_fallbacks);
+                st.capacity_exponent, int(st.certified), st.levels, st.refinements, st.descent_steps, st.descent_pieces, st.largest_band, st.certificates, st.max_flow_fallbacks);
   }
   if(run_glpk)
   {

@@ -433,7 +433,7 @@ TEST(LemonResidual, MultilevelHierarchyMatchesGLPK)
 // settings need network simplex on the whole problem.
 TEST(LemonResidual, DescentStepsReachTheOptimumWithoutBands)
 {
-  std::size_t fallbacks_without = 0, certified_by_descent = 0;
+  std::size_t fallbacks_without = 0, certified_by_descent = 0, several_pieces = 0;
   for(unsigned seed = 1; seed <= 16; ++seed)
   {
     const bool closed = seed % 4 != 0;
@@ -444,6 +444,9 @@ TEST(LemonResidual, DescentStepsReachTheOptimumWithoutBands)
     expect_solver_matches_glpk(without, rp.P, "no refinement, no descent, seed " + std::to_string(seed));
     expect_solver_matches_glpk(with, rp.P, "no refinement, descent, seed " + std::to_string(seed));
     EXPECT_EQ(with.statistics().refinements, 0u);
+    // each connected piece of a barrier rises by its own line search
+    EXPECT_GE(with.statistics().descent_pieces, with.statistics().descent_steps);
+    several_pieces += with.statistics().descent_pieces > with.statistics().descent_steps;
     if(without.statistics().fallback)
     {
       ++fallbacks_without;
@@ -454,6 +457,8 @@ TEST(LemonResidual, DescentStepsReachTheOptimumWithoutBands)
   }
   EXPECT_GE(fallbacks_without, 3u);   // the settings do leave refused certificates on the finest level
   EXPECT_EQ(certified_by_descent, fallbacks_without);
+  EXPECT_GT(several_pieces, 0u);   // some barriers fall apart into several pieces, each with its line search
+  std::printf("descent without bands: %zu of 16 with a barrier of several pieces\n", several_pieces);
 }
 
 // The certificate's maximum flow, whichever algorithm finishes it (push-relabel alone, Boost's
