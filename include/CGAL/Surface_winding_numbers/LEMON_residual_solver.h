@@ -124,7 +124,8 @@ public:
     std::size_t levels = 0;              ///< `MULTILEVEL`: levels of the hierarchy (1: the problem itself)
     std::size_t refinements = 0;         ///< `MULTILEVEL`: band problems solved on the finest level
     std::size_t descent_steps = 0;       ///< `MULTILEVEL`: steps along the barriers of refused certificates (every level)
-    std::size_t descent_pieces = 0;      ///< `MULTILEVEL`: connected pieces of the barriers that those steps raised, each by its own line search (at least `descent_steps`)
+    std::size_t descent_pieces = 0;      ///< `MULTILEVEL`: connected pieces that those steps moved, each by its own line search (at least `descent_steps`)
+    std::size_t descent_lowerings = 0;   ///< `MULTILEVEL`: steps that lowered pieces of a barrier's complement rather than raising pieces of the barrier
     std::size_t largest_band = 0;        ///< `MULTILEVEL`: nodes of the largest problem given to network simplex
     std::size_t certificates = 0;        ///< `MULTILEVEL`: maximum flows run (every level, every refinement)
     std::size_t max_flow_fallbacks = 0;  ///< `MULTILEVEL`: maximum flows that Boykov-Kolmogorov finished (push-relabel over its budget, or slower in a race, see `set_concurrent_max_flows()`)
@@ -1416,27 +1417,56 @@ private:
 
   // one step of steepest descent along the barrier S of a refused certificate (the source side of
   // a minimum cut: raising pi on S lowers the cost, at the steepest rate among all sets), piece by
-  // piece: every connected piece C of S holds some of the excess that cannot reach a deficit, so
-  // raising pi on C alone lowers the cost too, and no arc joins two pieces, so the cost is a sum of
-  // one convex piecewise-linear function of t_C per piece. Each piece rises by its own t_C > 0, an
-  // exact line search over the breakpoints of the arcs that cross its border (t_C is the breakpoint
-  // where the slope stops being negative). One common t for all of S, stopped by the nearest
-  // breakpoint of any piece, took 32 steps on the finest level of 1.15M faces where this takes 9
-  // (benchmark/residual_solvers.md). The cost drops strictly; false (pi unchanged) if no piece has
-  // a negative slope at t = 0.
+  // piece. No arc joins two connected pieces of S, so the cost along their shifts is a sum of one
+  // convex piecewise-linear function per piece, and every piece that holds excess the maximum flow
+  // could not route has a negative slope: each such piece rises by its own t > 0, an exact line
+  // search over the breakpoints of the arcs that cross its border (t is the breakpoint where the
+  // slope stops being negative). The same holds for the pieces of the complement of S, lowered
+  // (the same tensions as raising S, up to the gauge), where the pieces that still lack inflow have
+  // a negative slope; the step takes the side whose pieces lower the cost more. One common t for
+  // all of S, stopped by the nearest breakpoint of any piece, took 32 steps on the finest level of
+  // 1.15M faces where this takes 9 (benchmark/residual_solvers.md). The cost drops strictly; false
+  // (pi unchanged) if no piece has a negative slope at t = 0.
   bool descend_along_barrier(const Level& lv, Int U, std::vector<Int>& pi, const std::vector<char>& S)
   {
-    // the connected pieces of S: no arc joins two of them, so the cost along their shifts is a sum
-    // of one convex function per piece, and each piece gets its own exact line search
-    const std::size_t none = (std::numeric_limits<std::size_t>::max)();
     Certificate_workspace& ws = *lv.workspace;
     if(!ws.adjacency) ws.adjacency.reset(new Adjacency(lv.n, lv.arcs));
-    const Adjacency& adj = *ws.adjacency;
-    std::vector<std::size_t> piece(lv.n, none), queue;
+    std::vector<std::size_t> piece_up, piece_down;
+    std::vector<Int> step_up, step_down;
+    const double up = descent_by_pieces(lv, U, pi, S, 1, piece_up, step_up);
+    const double down = descent_by_pieces(lv, U, pi, S, 0, piece_down, step_down);
+    if(!(up > 0) && !(down > 0)) return false;
+    const bool raise = up >= down;
+    const std::vector<std::size_t>& piece = raise ? piece_up : piece_down;
+    const std::vector<Int>& step = raise ? step_up : step_down;
+    std::size_t moved = 0;
+    for(Int t : step) moved += t > 0;
+    stats_.descent_pieces += moved;
+    stats_.descent_lowerings += raise ? 0 : 1;
+    if(verbose_)
+      std::cerr << "[swn] multilevel: " << (raise ? "barrier" : "its complement") << " in " << step.size() << " piece(s), "
+                << moved << " " << (raise ? "raised" : "lowered") << " (decrease " << (raise ? up : down) << ", the other side "
+                << (raise ? down : up) << ")\n";
+    const char side = raise ? 1 : 0;
+    for(std::size_t v = 0; v < lv.n; ++v)
+      if(S[v] == side) pi[v] += raise ? step[piece[v]] : -step[piece[v]];
+    return true;
+  }
+
+  // the exact line search of descend_along_barrier() on the connected pieces of the nodes v with
+  // S[v] == side, raised (side 1) or lowered (side 0): piece[v] gets v's piece, step[c] the shift of
+  // piece c (0: it does not move); returns the decrease of the (scaled) cost, approximately
+  double descent_by_pieces(const Level& lv, Int U, const std::vector<Int>& pi, const std::vector<char>& S, char side,
+                           std::vector<std::size_t>& piece, std::vector<Int>& step) const
+  {
+    const std::size_t none = (std::numeric_limits<std::size_t>::max)();
+    const Adjacency& adj = *lv.workspace->adjacency;
+    piece.assign(lv.n, none);
+    std::vector<std::size_t> queue;
     std::size_t pieces = 0;
     for(std::size_t s = 0; s < lv.n; ++s)
     {
-      if(!S[s] || piece[s] != none) continue;
+      if(S[s] != side || piece[s] != none) continue;
       piece[s] = pieces;
       queue.assign(1, s);
       for(std::size_t q = 0; q < queue.size(); ++q)
@@ -1444,12 +1474,18 @@ private:
         {
           const Int_arc& e = lv.arcs[adj.arc[k]];
           const std::size_t u = e.L == queue[q] ? e.R : e.L;
-          if(S[u] && piece[u] == none) { piece[u] = pieces; queue.push_back(u); }
+          if(S[u] == side && piece[u] == none) { piece[u] = pieces; queue.push_back(u); }
         }
       ++pieces;
     }
-    struct Kink { std::size_t piece; Int t; Wide rise; bool operator<(const Kink& o) const { return piece != o.piece ? piece < o.piece : t < o.t; } };
-    std::vector<Kink> kinks;   // (piece, t, rise of the slope there)
+    struct Kink
+    {
+      std::size_t piece;
+      Int t;
+      Wide rise;   // of the slope at t
+      bool operator<(const Kink& o) const { return piece != o.piece ? piece < o.piece : t < o.t; }
+    };
+    std::vector<Kink> kinks;
     std::vector<Wide> slope(pieces, 0);
     // J moves by dir * t; the kinks of f (at 0 and at the bounds, each position once) ahead of J
     auto add_kinks = [&](std::size_t c, const Int_arc& e, Int J, int dir)
@@ -1467,36 +1503,31 @@ private:
     {
       if(S[e.L] == S[e.R]) continue;
       const Int J = tension(e, pi);
-      if(S[e.L]) { slope[piece[e.L]] += right_slope(e, J, U); add_kinks(piece[e.L], e, J, 1); }
-      else { slope[piece[e.R]] -= left_slope(e, J, U); add_kinks(piece[e.R], e, J, -1); }
+      // J = sh + pi[L] - pi[R] rises when L rises or R falls
+      const bool rises = (S[e.L] == side) == (side == 1);
+      const std::size_t c = piece[S[e.L] == side ? e.L : e.R];
+      if(rises) { slope[c] += right_slope(e, J, U); add_kinks(c, e, J, 1); }
+      else { slope[c] -= left_slope(e, J, U); add_kinks(c, e, J, -1); }
     }
     std::sort(kinks.begin(), kinks.end());
-    std::vector<Int> step(pieces, 0);
-    bool moved = false;
+    step.assign(pieces, 0);
+    double decrease = 0;
     for(std::size_t k = 0; k < kinks.size();)
     {
       const std::size_t c = kinks[k].piece;
       Wide d = slope[c];
       Int t = 0;
+      double gain = 0;
       for(; k < kinks.size() && kinks[k].piece == c; ++k)
       {
         if(d >= 0) continue;
+        gain -= double(d) * double(kinks[k].t - t);
         t = kinks[k].t;
         d += kinks[k].rise;
       }
-      if(slope[c] < 0 && t > 0) { step[c] = t; moved = true; }
+      if(slope[c] < 0 && t > 0) { step[c] = t; decrease += gain; }
     }
-    if(verbose_)
-    {
-      std::size_t steps = 0;
-      for(Int t : step) steps += t > 0;
-      std::cerr << "[swn] multilevel: barrier in " << pieces << " piece(s), " << steps << " descending\n";
-    }
-    if(!moved) return false;
-    for(Int t : step) stats_.descent_pieces += t > 0;
-    for(std::size_t v = 0; v < lv.n; ++v)
-      if(S[v]) pi[v] += step[piece[v]];
-    return true;
+    return decrease;
   }
 
   bool multilevel(std::size_t nn, std::vector<Int_arc> arcs, Int U, std::vector<Int>& pi, std::string& why)
