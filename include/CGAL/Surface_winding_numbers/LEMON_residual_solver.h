@@ -156,9 +156,12 @@ public:
   that circulation is an exact certificate that the answer is optimal for the whole problem, and it
   is checked independently (bounds and conservation, in integers). When no such circulation
   exists, the minimum cut is a set of faces whose shifts can all rise with a negative slope of the
-  objective (the steepest such set): the shifts of that set rise by the amount that minimizes the
-  objective along that direction (an exact line search over the breakpoints of the arcs that
-  cross the set's border), and the certificate is tried again from its previous flow, on the
+  objective (the steepest such set): the shifts of each connected piece of that set rise by the
+  amount that minimizes the objective along that direction (an exact line search over the
+  breakpoints of the arcs that cross the piece's border; no arc joins two pieces, so each piece
+  has its own), or those of each piece of its complement fall, whichever lowers the objective
+  more (`statistics().descent_pieces`, `statistics().descent_lowerings`), and the certificate is
+  tried again from its previous flow, on the
   maximum-flow graphs of the level's first certificate (kept until the level is done). These
   descent steps are taken on every level (at most `descent_steps()` per level, see
   `set_descent_steps()`). If the certificate of the finest level is still refused, a band around
