@@ -257,6 +257,8 @@ int main(int argc, char** argv)
     log("read " + std::to_string(num_vertices(input)) + " vertices, " + std::to_string(num_faces(input)) + " faces");
     t0 = std::chrono::steady_clock::now();
     cut = SIO::conforming_cut(input, curves);
+    input = Mesh();   // the run goes on with the cut's copy: free the input's memory now
+    curves.clear();
     t_cut = seconds_since(t0);
     log("curve on edges: " + std::to_string(cut.cut_new_vertices) + " vertices from the cut, " +
         std::to_string(cut.refine_new_vertices) + " from refining short pieces");
