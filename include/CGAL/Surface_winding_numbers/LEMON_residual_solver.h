@@ -1427,9 +1427,9 @@ private:
   // slope stops being negative). The same holds for the pieces of the complement of S, lowered
   // (the same tensions as raising S, up to the gauge), where the pieces that still lack inflow have
   // a negative slope; the step takes the side whose pieces lower the cost more. One common t for
-  // all of S, stopped by the nearest breakpoint of any piece, took 32 steps on the finest level of
-  // 1.15M faces where this takes 9 (benchmark/residual_solvers.md). The cost drops strictly; false
-  // (pi unchanged) if no piece has a negative slope at t = 0.
+  // all of S, stopped by the nearest breakpoint of any piece, took 32 steps (21 on the finest level)
+  // on a problem of 1.15M faces where this takes 10 (6; benchmark/residual_solvers.md). The cost
+  // drops strictly; false (pi unchanged) if no piece has a negative slope at t = 0.
   bool descend_along_barrier(const Level& lv, Int U, std::vector<Int>& pi, const std::vector<char>& S)
   {
     Certificate_workspace& ws = *lv.workspace;
