@@ -774,23 +774,42 @@ private:
 
   static bool contractible(const Int_arc& e) { return !e.has_lo && !e.has_up && e.sh == 0; }
 
-  static void find_components(Level& lv)
+  // numbers the connected pieces of the nodes v with inside(v), joined by the level's arcs between
+  // two such nodes: every such v with id[v] == npos gets its piece's number, counted from `first` in
+  // the order of the pieces' first nodes; returns the next number
+  template <class Inside>
+  static std::size_t number_pieces(const Level& lv, const Adjacency& adj, Inside inside, std::vector<std::size_t>& id,
+                                   std::size_t first)
   {
-    const Adjacency adj(lv.n, lv.arcs);
-    lv.component.assign(lv.n, npos);
     std::vector<std::size_t> queue;
+    std::size_t n = first;
     for(std::size_t r = 0; r < lv.n; ++r)
     {
-      if(lv.component[r] != npos) continue;
-      lv.component[r] = r;
+      if(id[r] != npos || !inside(r)) continue;
+      id[r] = n;
       queue.assign(1, r);
       for(std::size_t q = 0; q < queue.size(); ++q)
         for(std::size_t k = adj.first[queue[q]]; k < adj.first[queue[q] + 1]; ++k)
         {
           const Int_arc& e = lv.arcs[adj.arc[k]];
           const std::size_t y = e.L == queue[q] ? e.R : e.L;
-          if(lv.component[y] == npos) { lv.component[y] = r; queue.push_back(y); }
+          if(id[y] == npos && inside(y)) { id[y] = n; queue.push_back(y); }
         }
+      ++n;
+    }
+    return n;
+  }
+
+  static void find_components(Level& lv)
+  {
+    const Adjacency adj(lv.n, lv.arcs);
+    std::vector<std::size_t> piece(lv.n, npos);
+    std::vector<std::size_t> first_node(number_pieces(lv, adj, [](std::size_t) { return true; }, piece, 0), npos);
+    lv.component.resize(lv.n);
+    for(std::size_t v = 0; v < lv.n; ++v)
+    {
+      if(first_node[piece[v]] == npos) first_node[piece[v]] = v;
+      lv.component[v] = first_node[piece[v]];
     }
   }
 
@@ -1129,20 +1148,7 @@ private:
     for(std::size_t v = 0; v < lv.n; ++v)
       if(dist[v] >= 0) id[v] = n++;
     const std::size_t band = n;
-    for(std::size_t r = 0; r < lv.n; ++r)
-    {
-      if(id[r] != npos) continue;
-      id[r] = n;
-      queue.assign(1, r);
-      for(std::size_t q = 0; q < queue.size(); ++q)
-        for(std::size_t k = adj.first[queue[q]]; k < adj.first[queue[q] + 1]; ++k)
-        {
-          const Int_arc& e = lv.arcs[adj.arc[k]];
-          const std::size_t y = e.L == queue[q] ? e.R : e.L;
-          if(id[y] == npos) { id[y] = n; queue.push_back(y); }
-        }
-      ++n;
-    }
+    n = number_pieces(lv, adj, [&](std::size_t v) { return dist[v] < 0; }, id, band);
     std::vector<Int_arc> sub;
     std::vector<std::size_t> level_arc;
     for(std::size_t i = 0; i < lv.arcs.size(); ++i)
@@ -1207,9 +1213,7 @@ private:
   {
     std::vector<Int> inflow;
     node_supply(lv, x, inflow);
-    Certificate_workspace& ws = *lv.workspace;
-    if(!ws.adjacency) ws.adjacency.reset(new Adjacency(lv.n, lv.arcs));
-    const Adjacency& adj = *ws.adjacency;
+    const Adjacency& adj = level_adjacency(lv);
     std::vector<char> reaches(lv.n, 0);
     std::vector<std::size_t> queue;
     for(std::size_t v = 0; v < lv.n; ++v)
@@ -1229,6 +1233,14 @@ private:
     }
     barrier.assign(lv.n, 0);
     for(std::size_t v = 0; v < lv.n; ++v) barrier[v] = reaches[v] ? 0 : 1;
+  }
+
+  // the adjacency of a level, built once and kept with its certificates' workspace
+  static const Adjacency& level_adjacency(const Level& lv)
+  {
+    Certificate_workspace& ws = *lv.workspace;
+    if(!ws.adjacency) ws.adjacency.reset(new Adjacency(lv.n, lv.arcs));
+    return *ws.adjacency;
   }
 
   // Boykov-Kolmogorov (Boost.Graph) from the flow x, which it completes; true if balanced. Throws
@@ -1432,8 +1444,6 @@ private:
   // drops strictly; false (pi unchanged) if no piece has a negative slope at t = 0.
   bool descend_along_barrier(const Level& lv, Int U, std::vector<Int>& pi, const std::vector<char>& S)
   {
-    Certificate_workspace& ws = *lv.workspace;
-    if(!ws.adjacency) ws.adjacency.reset(new Adjacency(lv.n, lv.arcs));
     std::vector<std::size_t> piece_up, piece_down;
     std::vector<Int> step_up, step_down;
     const double up = descent_by_pieces(lv, U, pi, S, 1, piece_up, step_up);
@@ -1462,25 +1472,9 @@ private:
   double descent_by_pieces(const Level& lv, Int U, const std::vector<Int>& pi, const std::vector<char>& S, char side,
                            std::vector<std::size_t>& piece, std::vector<Int>& step) const
   {
-    const std::size_t none = (std::numeric_limits<std::size_t>::max)();
-    const Adjacency& adj = *lv.workspace->adjacency;
-    piece.assign(lv.n, none);
-    std::vector<std::size_t> queue;
-    std::size_t pieces = 0;
-    for(std::size_t s = 0; s < lv.n; ++s)
-    {
-      if(S[s] != side || piece[s] != none) continue;
-      piece[s] = pieces;
-      queue.assign(1, s);
-      for(std::size_t q = 0; q < queue.size(); ++q)
-        for(std::size_t k = adj.first[queue[q]]; k < adj.first[queue[q] + 1]; ++k)
-        {
-          const Int_arc& e = lv.arcs[adj.arc[k]];
-          const std::size_t u = e.L == queue[q] ? e.R : e.L;
-          if(S[u] == side && piece[u] == none) { piece[u] = pieces; queue.push_back(u); }
-        }
-      ++pieces;
-    }
+    piece.assign(lv.n, npos);
+    const std::size_t pieces =
+      number_pieces(lv, level_adjacency(lv), [&](std::size_t v) { return S[v] == side; }, piece, 0);
     struct Kink
     {
       std::size_t piece;
