@@ -47,10 +47,14 @@ def solver_environment():
     """The environment of the solver processes: like the swn tool, one OpenMP thread (CHOLMOD's fixed
     four-thread regions) and one OpenBLAS thread unless the caller set them; the libraries read both
     when they load. Under the two concurrent factorizations they otherwise oversubscribe small
-    machines (RESULTS.md, Speed)."""
+    machines (RESULTS.md, Speed). Also like the tool, glibc's malloc asks for transparent huge pages
+    (glibc.malloc.hugetlb=1 added to GLIBC_TUNABLES unless the caller set it; RESULTS.md, Speed)."""
     env = dict(os.environ)
     env.setdefault("OMP_THREAD_LIMIT", "1")
     env.setdefault("OPENBLAS_NUM_THREADS", "1")
+    tunables = env.get("GLIBC_TUNABLES", "")
+    if "glibc.malloc.hugetlb" not in tunables:
+        env["GLIBC_TUNABLES"] = (tunables + ":" if tunables else "") + "glibc.malloc.hugetlb=1"
     return env
 
 
@@ -160,9 +164,15 @@ def machine():
                 mem = round(int(line.split()[1]) / 1024 / 1024, 1)
     except OSError:
         pass
+    thp = None
+    try:
+        thp = open("/sys/kernel/mm/transparent_hugepage/enabled").read().strip()
+    except OSError:
+        pass
     env = solver_environment()
     return {"cpu": cpu, "cores": os.cpu_count(), "memory_gb": mem, "system": platform.platform(),
-            "solver_thread_limits": {k: env[k] for k in ("OMP_THREAD_LIMIT", "OPENBLAS_NUM_THREADS")}}
+            "solver_thread_limits": {k: env[k] for k in ("OMP_THREAD_LIMIT", "OPENBLAS_NUM_THREADS")},
+            "solver_glibc_tunables": env["GLIBC_TUNABLES"], "transparent_hugepages": thp}
 
 
 def git_commit(root):

@@ -19,6 +19,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <future>
 #include <iostream>
 #include <limits>
@@ -178,18 +179,30 @@ std::future<void> start_task(bool sequential, Task task)
 // fixed four threads, and OpenBLAS keeps its own pool: together they put many more threads than
 // cores on the machine, and the first solve of DoubleTorusWithLoops took 0.12-0.30 s instead of
 // 0.085-0.115 s (benchmark/RESULTS.md, Speed). Both limits are read from the environment when the
-// libraries are loaded, before main(); so the tool restarts itself once (Linux: /proc/self/exe)
-// with OMP_THREAD_LIMIT=1 and OPENBLAS_NUM_THREADS=1, keeping whatever the user set. If the
-// restart is not possible, the run goes on in this process.
-void restart_with_one_thread_per_library(char** argv)
+// libraries are loaded, before main(). Likewise glibc reads its malloc tunables at startup, and
+// `glibc.malloc.hugetlb=1` (glibc 2.35 and later; older ones ignore it) makes malloc ask for
+// transparent huge pages: on a mesh of a million faces every array of the run is touched page by
+// page, and with 4 KiB pages the page faults and TLB misses cost a quarter of the run (chain10:
+// 32.7 s -> 23.5 s, benchmark/RESULTS.md). So the tool restarts itself once (Linux:
+// /proc/self/exe) with OMP_THREAD_LIMIT=1, OPENBLAS_NUM_THREADS=1 and that tunable added to
+// GLIBC_TUNABLES, keeping whatever the user set. If the restart is not possible, the run goes on
+// in this process.
+void restart_with_process_settings(char** argv)
 {
 #if defined(__linux__)
-  if(std::getenv("OMP_THREAD_LIMIT") != nullptr && std::getenv("OPENBLAS_NUM_THREADS") != nullptr) return;
+  const char* tunables = std::getenv("GLIBC_TUNABLES");
+  const bool has_hugetlb = tunables != nullptr && std::strstr(tunables, "glibc.malloc.hugetlb") != nullptr;
+  if(std::getenv("OMP_THREAD_LIMIT") != nullptr && std::getenv("OPENBLAS_NUM_THREADS") != nullptr && has_hugetlb) return;
+  if(std::getenv("SWN_TOOL_RESTARTS") != nullptr) return;   // restarted once already: never loop
   if(setenv("OMP_THREAD_LIMIT", "1", 0) != 0 || setenv("OPENBLAS_NUM_THREADS", "1", 0) != 0) return;
-  // counts the restarts for the log (--verbose); the new process has both variables and goes on
-  const char* before = std::getenv("SWN_TOOL_RESTARTS");
-  const std::string count = std::to_string(before ? std::atoi(before) + 1 : 1);
-  if(setenv("SWN_TOOL_RESTARTS", count.c_str(), 1) != 0) return;
+  if(!has_hugetlb)
+  {
+    const std::string t = tunables != nullptr && *tunables != '\0' ? std::string(tunables) + ":glibc.malloc.hugetlb=1"
+                                                                    : std::string("glibc.malloc.hugetlb=1");
+    if(setenv("GLIBC_TUNABLES", t.c_str(), 1) != 0) return;
+  }
+  // marks the restart for the log (--verbose); the new process has the settings and goes on
+  if(setenv("SWN_TOOL_RESTARTS", "1", 1) != 0) return;
   execv("/proc/self/exe", argv);   // returns only on failure
 #else
   (void)argv;
@@ -214,7 +227,7 @@ void keep_freed_memory_for_reuse()
 
 int main(int argc, char** argv)
 {
-  restart_with_one_thread_per_library(argv);
+  restart_with_process_settings(argv);
   keep_freed_memory_for_reuse();
   // one OpenBLAS thread per call, so that the two factorizations run side by side (when the
   // environment does not say otherwise)
@@ -233,8 +246,8 @@ int main(int argc, char** argv)
   auto log = [&](const std::string& s) { if(opt.verbose) std::cerr << "[swn] " << s << "\n"; };
   if(single_threaded_blas) log("OpenBLAS set to one thread per call (OPENBLAS_NUM_THREADS overrides)");
   if(const char* restarts = std::getenv("SWN_TOOL_RESTARTS"))
-    log(std::string("restarted ") + restarts + " time(s) with one thread per library");
-  for(const char* var : {"OMP_THREAD_LIMIT", "OPENBLAS_NUM_THREADS"})
+    log(std::string("restarted ") + restarts + " time(s) with one thread per library and malloc's huge pages");
+  for(const char* var : {"OMP_THREAD_LIMIT", "OPENBLAS_NUM_THREADS", "GLIBC_TUNABLES"})
     if(const char* value = std::getenv(var)) log(std::string(var) + "=" + value);
 
   const auto t_start = std::chrono::steady_clock::now();

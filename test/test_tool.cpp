@@ -131,9 +131,10 @@ TEST(Tool, HelpAndUsageErrors)
 }
 
 #if defined(__linux__)
-// The tool restarts itself once with one OpenMP thread (CHOLMOD) and one OpenBLAS thread, keeping
-// what the user set, and the answer does not depend on it.
-TEST(Tool, RestartsWithOneThreadPerLibraryKeepingTheUsersSettings)
+// The tool restarts itself once with one OpenMP thread (CHOLMOD), one OpenBLAS thread and malloc's
+// transparent huge pages (GLIBC_TUNABLES), keeping what the user set, and the answer does not
+// depend on it.
+TEST(Tool, RestartsWithProcessSettingsKeepingTheUsersOwn)
 {
   const std::string args = "'" + demo + "torus.obj' --curve '" + demo + "torus-phi.txt' --verbose";
   std::vector<std::vector<int>> labels;
@@ -145,18 +146,24 @@ TEST(Tool, RestartsWithOneThreadPerLibraryKeepingTheUsersSettings)
     fs::remove_all(out);
     return r.err;
   };
-  const std::string once = "[swn] restarted 1 time(s) with one thread per library\n";
-  std::string err = solve("env -u OMP_THREAD_LIMIT -u OPENBLAS_NUM_THREADS -u SWN_TOOL_RESTARTS", "restart");
+  const std::string once = "[swn] restarted 1 time(s) with one thread per library and malloc's huge pages\n";
+  std::string err =
+    solve("env -u OMP_THREAD_LIMIT -u OPENBLAS_NUM_THREADS -u GLIBC_TUNABLES -u SWN_TOOL_RESTARTS", "restart");
   EXPECT_NE(err.find(once), std::string::npos) << "not exactly one restart: " << err;
   EXPECT_NE(err.find("[swn] OMP_THREAD_LIMIT=1\n"), std::string::npos) << err;
   EXPECT_NE(err.find("[swn] OPENBLAS_NUM_THREADS=1\n"), std::string::npos) << err;
-  err = solve("env -u OMP_THREAD_LIMIT -u SWN_TOOL_RESTARTS OPENBLAS_NUM_THREADS=2", "keep");
+  EXPECT_NE(err.find("[swn] GLIBC_TUNABLES=glibc.malloc.hugetlb=1\n"), std::string::npos) << err;
+  err = solve("env -u OMP_THREAD_LIMIT -u SWN_TOOL_RESTARTS OPENBLAS_NUM_THREADS=2 GLIBC_TUNABLES=glibc.malloc.check=0",
+              "keep");
   EXPECT_NE(err.find(once), std::string::npos) << "not exactly one restart: " << err;
   EXPECT_NE(err.find("[swn] OMP_THREAD_LIMIT=1\n"), std::string::npos) << err;
   EXPECT_NE(err.find("[swn] OPENBLAS_NUM_THREADS=2\n"), std::string::npos) << err;
-  err = solve("env -u SWN_TOOL_RESTARTS OMP_THREAD_LIMIT=3 OPENBLAS_NUM_THREADS=2", "none");
-  EXPECT_EQ(err.find("[swn] restarted"), std::string::npos) << "restarted although both were set: " << err;
+  EXPECT_NE(err.find("[swn] GLIBC_TUNABLES=glibc.malloc.check=0:glibc.malloc.hugetlb=1\n"), std::string::npos) << err;
+  err = solve("env -u SWN_TOOL_RESTARTS OMP_THREAD_LIMIT=3 OPENBLAS_NUM_THREADS=2 GLIBC_TUNABLES=glibc.malloc.hugetlb=0",
+              "none");
+  EXPECT_EQ(err.find("[swn] restarted"), std::string::npos) << "restarted although all were set: " << err;
   EXPECT_NE(err.find("[swn] OMP_THREAD_LIMIT=3\n"), std::string::npos) << err;
+  EXPECT_NE(err.find("[swn] GLIBC_TUNABLES=glibc.malloc.hugetlb=0\n"), std::string::npos) << err;
   ASSERT_EQ(labels.size(), 3u);
   EXPECT_FALSE(labels[0].empty());
   EXPECT_EQ(labels[0], labels[1]);
