@@ -851,4 +851,18 @@ TEST(ConcurrentFactorizations, SameAnswerAsSequential)
     EXPECT_TRUE(solver.report().hodge_projection);
     for(auto f : faces(m)) EXPECT_EQ(l3[f], s.l1[f]);
   }
+  // freed after a solve (keep_hodge_factorization(false)), it is factorized again by the next one,
+  // and the answers stay the same
+  auto w3 = m.add_property_map<Mesh::Halfedge_index, double>("h:w3", 0).first;
+  for(int k = 0; k < 2; ++k)
+  {
+    ASSERT_TRUE(solver.solve(chain, l3, SWN::parameters::keep_hodge_factorization(false,
+                                        SWN::parameters::winding_number_map(w3)))) << solver.report().error;
+    EXPECT_TRUE(solver.report().hodge_projection);
+    for(auto f : faces(m)) EXPECT_EQ(l3[f], s.l1[f]);
+    for(auto h : halfedges(m))
+      if(std::isfinite(w1[h]) || std::isfinite(w3[h])) EXPECT_NEAR(w1[h], w3[h], 1e-9);
+  }
+  ASSERT_TRUE(solver.solve(chain, l3)) << solver.report().error;
+  for(auto f : faces(m)) EXPECT_EQ(l3[f], s.l1[f]);
 }

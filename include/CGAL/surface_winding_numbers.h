@@ -111,6 +111,11 @@ connected component, the label covering the largest area is 0.
     \cgalParamType{Boolean}
     \cgalParamDefault{`true` (`false` without `CGAL_HAS_THREADS`)}
   \cgalParamNEnd
+  \cgalParamNBegin{Surface_winding_numbers::parameters::keep_hodge_factorization}
+    \cgalParamDescription{ignored here: this function solves once, and frees the factorization of the 2-form Laplacian as soon as the harmonic part is computed, before the residual step (lower peak memory). `Surface_winding_numbers_solver::solve()` keeps it by default for the next solve on the same mesh}
+    \cgalParamType{Boolean}
+    \cgalParamDefault{`false`}
+  \cgalParamNEnd
   \cgalParamNBegin{Surface_winding_numbers::parameters::report}
     \cgalParamDescription{receives what the solve did (sizes, topology, LP size and objective, timings) and, on failure, why}
     \cgalParamType{`std::reference_wrapper<CGAL::Surface_winding_numbers::Solve_report>`}
@@ -135,7 +140,8 @@ bool surface_winding_numbers(const TriangleMesh& tm, const ChainMap& chain, Labe
   typedef std::conditional_t<std::is_same<Solver_param, CGAL::Default>::value, CGAL::Default,
                              std::remove_cv_t<std::remove_reference_t<Solver_param>>> LA;
   Surface_winding_numbers::Surface_winding_numbers_solver<TriangleMesh, LA> solver(tm, np);
-  return solver.solve(chain, labels, np);
+  // one solve: the 2-form Laplacian's factorization is freed before the residual step
+  return solver.solve(chain, labels, Surface_winding_numbers::parameters::keep_hodge_factorization(false, np));
 }
 
 } // namespace CGAL

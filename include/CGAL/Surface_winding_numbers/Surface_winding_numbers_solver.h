@@ -184,7 +184,7 @@ public:
   \param label_map receives the winding number label W of every face
   \param np optional named parameters among `nonbounding_chain_map`, `nonbounding_chain_real_map`,
          `bounding_chain_map`, `winding_number_map`, `epsilon`, `lp_solver`, `use_reduced_residual`,
-         `concurrent_factorizations`, `report`, `verbose`
+         `concurrent_factorizations`, `keep_hodge_factorization`, `report`, `verbose`
          (see `CGAL::surface_winding_numbers()`).
   \returns `true` on success. On failure no output map is written and `report().error` says why.
   */
@@ -209,6 +209,7 @@ public:
       options.verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
       options.reduced_residual = choose_parameter(get_parameter(np, snp::use_reduced_residual), false);
       options.concurrent_factorizations = choose_parameter(get_parameter(np, snp::concurrent_factorizations), true);
+      options.keep_hodge_factorization = choose_parameter(get_parameter(np, snp::keep_hodge_factorization), true);
 
       std::vector<double> chain(core_->tables().ne, 0.);
       for(edge_descriptor e : edges(tm_)) chain[get(eim_, e)] = double(get(chain_map, e));

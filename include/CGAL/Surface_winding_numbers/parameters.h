@@ -19,6 +19,7 @@ enum epsilon_t { epsilon };
 enum lp_solver_t { lp_solver };
 enum use_reduced_residual_t { use_reduced_residual };
 enum concurrent_factorizations_t { concurrent_factorizations };
+enum keep_hodge_factorization_t { keep_hodge_factorization };
 enum report_t { report };
 } // namespace internal_np
 /// \endcond
@@ -76,6 +77,12 @@ CGAL_SWN_NAMED_PARAMETER(use_reduced_residual_t, use_reduced_residual)
 /// one after the other, on the calling thread. Same results either way (see
 /// `use_single_threaded_openblas()` for OpenBLAS)
 CGAL_SWN_NAMED_PARAMETER(concurrent_factorizations_t, concurrent_factorizations)
+/// `true` (the default of `Surface_winding_numbers_solver::solve()`): the factorization of the 2-form
+/// Laplacian (Hodge projection; it depends on the mesh only) is kept for the next solve on the same
+/// mesh; `false` (what `CGAL::surface_winding_numbers()` passes, its solver serving one solve): it is
+/// freed as soon as the harmonic part is computed, before the residual step, whose arrays then reuse
+/// its memory. Same results either way
+CGAL_SWN_NAMED_PARAMETER(keep_hodge_factorization_t, keep_hodge_factorization)
 /// @}
 
 #undef CGAL_SWN_NAMED_PARAMETER

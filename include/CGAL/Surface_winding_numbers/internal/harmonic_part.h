@@ -91,6 +91,16 @@ public:
 
   bool assembled() const { return m_ != nullptr; }
 
+  // frees the matrix and its factorization (assemble() builds them again when needed)
+  void release()
+  {
+    m_ = nullptr;
+    la_.reset();
+    A_.reset();
+    std::vector<std::size_t>().swap(dof_);
+    n_ = 0;
+  }
+
 private:
   const Mesh_tables* m_ = nullptr;
   const std::vector<double>* star_ = nullptr;

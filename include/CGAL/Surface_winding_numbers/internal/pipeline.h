@@ -38,6 +38,7 @@ struct Solve_options
   bool verbose = false;
   bool reduced_residual = false;   // paper Sec. 6 instead of the exact Eq. 11
   bool concurrent_factorizations = true;   // 2-form Laplacian factorized on a second thread
+  bool keep_hodge_factorization = true;    // false: freed after the harmonic part, before the residual
 };
 
 struct Core_result
@@ -166,6 +167,7 @@ public:
       // omega = D u (Eq. 5); gamma = harmonic part (Eq. 9) when the curve has interior endpoints
       if(hodge_factorization.valid()) hodge_factorization.get();   // rethrows a failed factorization
       const std::vector<double> gamma = harmonic_part_of(r.u, endpoint, open_curve);
+      if(!options.keep_hodge_factorization) hodge_.release();
       rep.hodge_projection = open_curve;
       rep.time_hodge = clock.lap();
       if(verbose) std::cerr << "[swn] Darboux derivative and harmonic part: " << rep.time_hodge << " s\n";
