@@ -247,7 +247,8 @@ int main(int argc, char** argv)
     SI::cotan_weights(m, weight);
     const std::vector<char> endpoint = SI::interior_endpoints(m, chain_t);
     SI::Jump_laplace_system<SI::Default_sparse_solver> L;
-    L.jump_laplacian(m, weight, endpoint);
+    const std::vector<std::size_t> order = SI::vertex_elimination_order(m);   // as the pipeline does
+    L.jump_laplacian(m, weight, endpoint, &order);
     const std::vector<double> u = L.solve_jump_laplace(SI::reduced_coordinates(m, SI::arc_jumps_from_chain(m, chain_t), endpoint));
     const std::vector<double> tau_u = SI::shift_tau(m, chain_t, u);
     std::vector<int> naive = SI::round_labels(m, u, tau_u);

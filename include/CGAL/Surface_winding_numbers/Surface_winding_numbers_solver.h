@@ -71,20 +71,46 @@ typedef No_linear_program_traits Default_linear_program_traits;
 typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<CGAL::Eigen_sparse_matrix<double>::EigenType>>
   Eigen_LDLT_sparse_solver;
 #ifdef CGAL_SWN_USE_CHOLMOD
-// CHOLMOD's supernodal Cholesky with AMD ordering only: CHOLMOD's default also tries METIS, whose
-// analysis costs more than it saves on these mesh Laplacians (measured: 490k unknowns, 3.2 s with
-// AMD against 4.8 s with the default and 6.4 s with METIS alone).
+// CHOLMOD's supernodal Cholesky in the order of the matrix: the package numbers the unknowns of both
+// Laplacians by geometric nested dissection (internal/nested_dissection.h), which CHOLMOD's
+// orderings do not improve on at a fraction of their cost (a vertex Laplacian of 577k unknowns: AMD
+// analysis 0.87 s and 1.27e10 flops; nested dissection 0.4 s and 0.91e10 flops). Should the fill of
+// that order ever be far above what a surface mesh gives (more than 32 entries of L per entry of the
+// matrix; about 8 there), the analysis is redone with AMD. CHOLMOD's default, which also tries
+// METIS, costs more than it saves on these matrices (490k unknowns: 3.2 s with AMD, 4.8 s with the
+// default, 6.4 s with METIS alone).
 template <class EigenMatrix>
-class Cholmod_supernodal_AMD : public Eigen::CholmodSupernodalLLT<EigenMatrix>
+class Cholmod_supernodal_in_given_order : public Eigen::CholmodSupernodalLLT<EigenMatrix>
 {
+  typedef Eigen::CholmodSupernodalLLT<EigenMatrix> Base;
+
 public:
-  Cholmod_supernodal_AMD()
+  Cholmod_supernodal_in_given_order()
   {
     this->cholmod().nmethods = 1;
-    this->cholmod().method[0].ordering = CHOLMOD_AMD;
+    this->cholmod().method[0].ordering = CHOLMOD_NATURAL;
   }
+
+  Cholmod_supernodal_in_given_order& compute(const EigenMatrix& A)
+  {
+    this->cholmod().method[0].ordering = A.rows() >= given_order_unknowns ? CHOLMOD_NATURAL : CHOLMOD_AMD;
+    this->analyzePattern(A);
+    if(this->info() == Eigen::Success && this->cholmod().method[0].ordering == CHOLMOD_NATURAL &&
+       this->cholmod().lnz > 32. * double(A.nonZeros()) + 1000.)
+    {
+      this->cholmod().method[0].ordering = CHOLMOD_AMD;
+      this->analyzePattern(A);
+    }
+    this->factorize(A);
+    return *this;
+  }
+
+  // below this size AMD's fill is smaller than that of the geometric nested dissection (a 60 x 60
+  // grid: 71k against 101k entries; the dual graph of a 30k-face scan: 1.3M against 1.9M) and its
+  // analysis is cheap; the two break even in time between 40k and 100k unknowns
+  static constexpr Eigen::Index given_order_unknowns = 150000;
 };
-typedef CGAL::Eigen_solver_traits<Cholmod_supernodal_AMD<CGAL::Eigen_sparse_matrix<double>::EigenType>>
+typedef CGAL::Eigen_solver_traits<Cholmod_supernodal_in_given_order<CGAL::Eigen_sparse_matrix<double>::EigenType>>
   CHOLMOD_sparse_solver;
 typedef CHOLMOD_sparse_solver Default_sparse_solver;
 #else

@@ -5,6 +5,7 @@
 #define CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_HARMONIC_PART_H
 
 #include <CGAL/Surface_winding_numbers/internal/mesh_tables.h>
+#include <CGAL/Surface_winding_numbers/internal/nested_dissection.h>
 
 #include <cmath>
 #include <memory>
@@ -32,7 +33,9 @@ public:
     star_ = &star;
     dof_.assign(m.nf, npos);
     std::size_t n = 0;
-    for(std::size_t f = 0; f < m.nf; ++f)
+    // unknowns numbered in the elimination order of the factorization
+    const std::vector<std::size_t> order = face_elimination_order(m);
+    for(std::size_t f : order)
     {
       const std::size_t c = m.face_component[f];
       if(m.component_border_edges[c] == 0 && m.component_first_face[c] == f) continue;   // pinned

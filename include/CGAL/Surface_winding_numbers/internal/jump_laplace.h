@@ -106,8 +106,10 @@ public:
   using Matrix = typename LA::Matrix;
   using Vector = typename LA::Vector;
 
-  // Assembles and factorizes L restricted to V* (paper Eq. 8).
-  void jump_laplacian(const Mesh_tables& m, const std::vector<double>& weight, const std::vector<char>& excluded)
+  // Assembles and factorizes L restricted to V* (paper Eq. 8). The unknowns are numbered in the
+  // vertex order `order` if given (the elimination order of the factorization), else by vertex.
+  void jump_laplacian(const Mesh_tables& m, const std::vector<double>& weight, const std::vector<char>& excluded,
+                      const std::vector<std::size_t>* order = nullptr)
   {
     m_ = &m;
     weight_ = &weight;
@@ -118,8 +120,11 @@ public:
       if(!excluded[m.tail(s)] && !excluded[m.head(s)]) sets.unite(m.tail(s), m.head(s));
     dof_.assign(m.nv, npos);
     std::size_t n = 0;
-    for(std::size_t v = 0; v < m.nv; ++v)
+    for(std::size_t k = 0; k < m.nv; ++k)
+    {
+      const std::size_t v = order ? (*order)[k] : k;
       if(!excluded[v] && m.vertex_component[v] != npos && sets.find(v) != v) dof_[v] = n++;   // roots are pinned
+    }
     n_ = n;
     la_.reset(new LA());
     if(n == 0) return;

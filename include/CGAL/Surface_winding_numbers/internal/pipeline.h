@@ -13,6 +13,7 @@
 #include <CGAL/Surface_winding_numbers/internal/derivatives.h>
 #include <CGAL/Surface_winding_numbers/internal/harmonic_part.h>
 #include <CGAL/Surface_winding_numbers/internal/jump_laplace.h>
+#include <CGAL/Surface_winding_numbers/internal/nested_dissection.h>
 #include <CGAL/Surface_winding_numbers/internal/mesh_tables.h>
 #include <CGAL/Surface_winding_numbers/internal/nonbounding_chain.h>
 #include <CGAL/Surface_winding_numbers/internal/reduced_residual.h>
@@ -219,7 +220,8 @@ public:
   std::vector<double> first_jump_laplace_solve(const std::vector<double>& chain, const std::vector<char>& endpoint,
                                                Jump_laplace_system<LA>& L) const
   {
-    L.jump_laplacian(m_, weight_, endpoint);
+    if(vertex_order_.size() != m_.nv) vertex_order_ = vertex_elimination_order(m_);   // once per mesh
+    L.jump_laplacian(m_, weight_, endpoint, &vertex_order_);
     return L.solve_jump_laplace(reduced_coordinates(m_, arc_jumps_from_chain(m_, chain), endpoint));
   }
 
@@ -293,6 +295,7 @@ private:
   std::size_t clamped_weights_ = 0;
   Two_form_laplacian<LA> hodge_;
   mutable std::vector<std::size_t> border_loops_;
+  mutable std::vector<std::size_t> vertex_order_;   // elimination order of the jump Laplacian
 };
 
 } // namespace internal
