@@ -129,7 +129,7 @@ The constructor extracts the mesh into flat index tables (renumbered for memory 
 mesh's own numbering is scattered; results and error messages use the mesh's own order), checks it (triangles only, finite
 coordinates, no zero-area face) and computes the cotan weights. The 2-form Laplacian used by the
 Hodge projection is factorized the first time a curve with interior endpoints needs it and then
-kept. The jump Laplacian depends on the curve's endpoints: it is factorized once per `solve()` and
+kept (unless `solve()` gets `keep_hodge_factorization(false)`). The jump Laplacian depends on the curve's endpoints: it is factorized once per `solve()` and
 used for both of its jump Laplace solves.
 
 The mesh must not be modified while the solver is in use.
@@ -137,7 +137,7 @@ The mesh must not be modified while the solver is in use.
 \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
 \tparam SparseLinearSolver a model of `SparseLinearAlgebraWithFactorTraits_d` for symmetric positive
         definite systems; its instances are default-constructed (one per factorization).
-        Default: `CGAL::Eigen_solver_traits` over CHOLMOD's supernodal Cholesky factorization (AMD ordering)
+        Default: `CGAL::Eigen_solver_traits` over CHOLMOD's supernodal Cholesky factorization (nested-dissection numbering above 150k unknowns, AMD below)
         when the package is built with CHOLMOD (`CGAL_SWN_USE_CHOLMOD`), otherwise
         `CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<CGAL::Eigen_sparse_matrix<double>::%EigenType> >`.
 */
