@@ -388,7 +388,7 @@ long cholesky_fill(std::size_t n, const std::vector<std::size_t>& first, const s
 
 TEST(NestedDissection, OrdersAreFillReducingPermutations)
 {
-  // the elimination orders of both Laplacians: permutations of the vertices and of the faces whose
+  // the nested-dissection orders of both Laplacians' graphs: permutations of the vertices and of the faces whose
   // Cholesky fill is a fraction of the mesh's own numbering's and near AMD's (on a 150 x 150 grid:
   // 1.1-1.3x AMD's; the nested dissection pays above 150k unknowns, where it is used)
   Mesh m;
@@ -398,11 +398,15 @@ TEST(NestedDissection, OrdersAreFillReducingPermutations)
   for(int faces = 0; faces < 2; ++faces)
   {
     const std::size_t n = faces ? t.nf : t.nv;
-    const std::vector<std::size_t> order = faces ? SI::face_elimination_order(t) : SI::vertex_elimination_order(t);
-    std::vector<std::size_t> sorted = order;
-    std::sort(sorted.begin(), sorted.end());
-    ASSERT_EQ(sorted.size(), n);
-    for(std::size_t k = 0; k < n; ++k) ASSERT_EQ(sorted[k], k);
+    // below nested_dissection_unknowns the mesh's numbering is kept (and CHOLMOD orders by AMD)
+    EXPECT_TRUE((faces ? SI::face_elimination_order(t) : SI::vertex_elimination_order(t)).empty());
+    std::vector<double> xyz = t.points;
+    if(faces)
+    {
+      xyz.assign(3 * t.nf, 0.);
+      for(std::size_t c = 0; c < 3 * t.nf; ++c)
+        for(int k = 0; k < 3; ++k) xyz[3 * (c / 3) + k] += t.points[3 * t.fv[c] + k] / 3;
+    }
     // the graph: mesh edges, or faces across interior edges
     std::vector<std::vector<std::size_t>> nb(n);
     for(std::size_t e = 0; e < t.ne; ++e)
@@ -414,6 +418,11 @@ TEST(NestedDissection, OrdersAreFillReducingPermutations)
     }
     std::vector<std::size_t> first(1, 0), adjacent;
     for(const auto& a : nb) { adjacent.insert(adjacent.end(), a.begin(), a.end()); first.push_back(adjacent.size()); }
+    const std::vector<std::size_t> order = SI::nested_dissection_order(first, adjacent, xyz);
+    std::vector<std::size_t> sorted = order;
+    std::sort(sorted.begin(), sorted.end());
+    ASSERT_EQ(sorted.size(), n);
+    for(std::size_t k = 0; k < n; ++k) ASSERT_EQ(sorted[k], k);
     const long nd = cholesky_fill(n, first, adjacent, &order);
     const long own = cholesky_fill(n, first, adjacent, nullptr);
     const long amd = cholesky_fill(n, first, adjacent, nullptr, true);
@@ -699,6 +708,14 @@ TEST(Solver, LargeMeshInNestedDissectionOrderAgreesWithLDLT)
   auto vs = grid_disk(m, n);
   auto chain = m.add_property_map<Mesh::Edge_index, int>("e:chain", 0).first;
   ASSERT_TRUE(SWN::add_vertex_polyline_to_chain(m, square_loop(vs, n, 100, 120, 300, 290), chain));
+  {
+    SWN::Surface_winding_numbers_solver<Mesh> s(m);
+    ASSERT_GE(s.tables().nv, SI::nested_dissection_unknowns);
+    std::vector<std::size_t> order = SI::vertex_elimination_order(s.tables());
+    std::sort(order.begin(), order.end());
+    ASSERT_EQ(order.size(), s.tables().nv);
+    for(std::size_t k = 0; k < order.size(); ++k) ASSERT_EQ(order[k], k);
+  }
   auto l1 = m.add_property_map<Mesh::Face_index, int>("f:l1", 0).first;
   auto l2 = m.add_property_map<Mesh::Face_index, int>("f:l2", 0).first;
   auto w1 = m.add_property_map<Mesh::Halfedge_index, double>("h:w1", 0).first;

@@ -82,8 +82,6 @@ typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<CGAL::Eigen_sparse_matri
 template <class EigenMatrix>
 class Cholmod_supernodal_in_given_order : public Eigen::CholmodSupernodalLLT<EigenMatrix>
 {
-  typedef Eigen::CholmodSupernodalLLT<EigenMatrix> Base;
-
 public:
   Cholmod_supernodal_in_given_order()
   {
@@ -93,7 +91,8 @@ public:
 
   Cholmod_supernodal_in_given_order& compute(const EigenMatrix& A)
   {
-    this->cholmod().method[0].ordering = A.rows() >= given_order_unknowns ? CHOLMOD_NATURAL : CHOLMOD_AMD;
+    this->cholmod().method[0].ordering =
+      std::size_t(A.rows()) >= nested_dissection_unknowns ? CHOLMOD_NATURAL : CHOLMOD_AMD;
     this->analyzePattern(A);
     if(this->info() == Eigen::Success && this->cholmod().method[0].ordering == CHOLMOD_NATURAL &&
        this->cholmod().lnz > 32. * double(A.nonZeros()) + 1000.)
@@ -104,12 +103,10 @@ public:
     this->factorize(A);
     return *this;
   }
-
-  // below this size AMD's fill is smaller than that of the geometric nested dissection (a 60 x 60
-  // grid: 71k against 101k entries; the dual graph of a 30k-face scan: 1.3M against 1.9M) and its
-  // analysis is cheap; the two break even in time between 40k and 100k unknowns
-  static constexpr Eigen::Index given_order_unknowns = 150000;
 };
+// (nested_dissection_unknowns: below it AMD's fill is smaller than that of the geometric nested
+// dissection (a 60 x 60 grid: 71k against 101k entries; the dual graph of a 30k-face scan: 1.3M
+// against 1.9M) and its analysis is cheap; the two break even in time between 40k and 100k unknowns.)
 typedef CGAL::Eigen_solver_traits<Cholmod_supernodal_in_given_order<CGAL::Eigen_sparse_matrix<double>::EigenType>>
   CHOLMOD_sparse_solver;
 typedef CHOLMOD_sparse_solver Default_sparse_solver;

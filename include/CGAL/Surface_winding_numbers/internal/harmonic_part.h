@@ -33,10 +33,11 @@ public:
     star_ = &star;
     dof_.assign(m.nf, npos);
     std::size_t n = 0;
-    // unknowns numbered in the elimination order of the factorization
+    // unknowns numbered in the elimination order of the factorization (large meshes), else by face
     const std::vector<std::size_t> order = face_elimination_order(m);
-    for(std::size_t f : order)
+    for(std::size_t k = 0; k < m.nf; ++k)
     {
+      const std::size_t f = order.empty() ? k : order[k];
       const std::size_t c = m.face_component[f];
       if(m.component_border_edges[c] == 0 && m.component_first_face[c] == f) continue;   // pinned
       dof_[f] = n++;

@@ -107,7 +107,8 @@ public:
   using Vector = typename LA::Vector;
 
   // Assembles and factorizes L restricted to V* (paper Eq. 8). The unknowns are numbered in the
-  // vertex order `order` if given (the elimination order of the factorization), else by vertex.
+  // vertex order `order` if given and not empty (the elimination order of the factorization), else
+  // by vertex.
   void jump_laplacian(const Mesh_tables& m, const std::vector<double>& weight, const std::vector<char>& excluded,
                       const std::vector<std::size_t>* order = nullptr)
   {
@@ -122,7 +123,7 @@ public:
     std::size_t n = 0;
     for(std::size_t k = 0; k < m.nv; ++k)
     {
-      const std::size_t v = order ? (*order)[k] : k;
+      const std::size_t v = order && !order->empty() ? (*order)[k] : k;
       if(!excluded[v] && m.vertex_component[v] != npos && sets.find(v) != v) dof_[v] = n++;   // roots are pinned
     }
     n_ = n;

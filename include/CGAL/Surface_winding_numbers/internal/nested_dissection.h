@@ -21,10 +21,16 @@ namespace internal {
 // upper half that have a neighbour in the lower half form the separator, numbered after both halves,
 // which are ordered the same way down to parts of `leaf` nodes. A plane cuts a surface mesh along
 // curves, so the separators have O(sqrt n) nodes on well-shaped meshes, the fill of nested dissection.
-// On the vertex graph of a 1.15M-face mesh of genus 10 (benchmark/RESULTS.md, Speed): 27 % fewer
-// flops and 7 % less fill than CHOLMOD's AMD, found in a fraction of AMD's time.
+// On the vertex graph of a 1.15M-face mesh of genus 10 (benchmark/RESULTS.md, Speed): 28 % fewer
+// flops and 7 % less fill than CHOLMOD's AMD, found in half of AMD's time; on small meshes AMD's fill
+// is lower (see the CHOLMOD traits in Surface_winding_numbers_solver.h).
+// Used from nested_dissection_unknowns unknowns on: below, AMD's fill is lower and its analysis cheap.
 // `first`/`adjacent`: the graph in compressed rows; `xyz`: 3 coordinates per node. Returns the order
 // (order[k] is the k-th node to eliminate).
+// from this many unknowns on, the Laplacians are numbered by nested dissection and the default
+// CHOLMOD traits factorize in that numbering (below, the mesh's numbering and AMD)
+constexpr std::size_t nested_dissection_unknowns = 150000;
+
 inline std::vector<std::size_t> nested_dissection_order(const std::vector<std::size_t>& first,
                                                         const std::vector<std::size_t>& adjacent,
                                                         const std::vector<double>& xyz, std::size_t leaf = 16)
@@ -71,9 +77,11 @@ inline std::vector<std::size_t> nested_dissection_order(const std::vector<std::s
   return order;
 }
 
-// the order above on the vertices of the mesh (joined by its edges)
+// the order above on the vertices of the mesh (joined by its edges); empty below
+// nested_dissection_unknowns vertices
 inline std::vector<std::size_t> vertex_elimination_order(const Mesh_tables& m)
 {
+  if(m.nv < nested_dissection_unknowns) return {};
   std::vector<std::size_t> first(m.nv + 1, 0), adjacent(2 * m.ne);
   for(std::size_t e = 0; e < m.ne; ++e) { ++first[m.ev[2 * e] + 1]; ++first[m.ev[2 * e + 1] + 1]; }
   for(std::size_t v = 0; v < m.nv; ++v) first[v + 1] += first[v];
@@ -86,9 +94,11 @@ inline std::vector<std::size_t> vertex_elimination_order(const Mesh_tables& m)
   return nested_dissection_order(first, adjacent, m.points);
 }
 
-// the order above on the faces of the mesh (joined across their edges), placed at their centroids
+// the order above on the faces of the mesh (joined across their edges), placed at their centroids;
+// empty below nested_dissection_unknowns faces
 inline std::vector<std::size_t> face_elimination_order(const Mesh_tables& m)
 {
+  if(m.nf < nested_dissection_unknowns) return {};
   std::vector<std::size_t> first(m.nf + 1, 0), adjacent;
   for(std::size_t e = 0; e < m.ne; ++e)
     for(std::size_t i = m.edge_side_begin[e]; i < m.edge_side_begin[e + 1]; ++i)

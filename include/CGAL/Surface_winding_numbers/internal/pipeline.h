@@ -220,7 +220,11 @@ public:
   std::vector<double> first_jump_laplace_solve(const std::vector<double>& chain, const std::vector<char>& endpoint,
                                                Jump_laplace_system<LA>& L) const
   {
-    if(vertex_order_.size() != m_.nv) vertex_order_ = vertex_elimination_order(m_);   // once per mesh
+    if(!vertex_order_computed_)   // once per mesh
+    {
+      vertex_order_ = vertex_elimination_order(m_);
+      vertex_order_computed_ = true;
+    }
     L.jump_laplacian(m_, weight_, endpoint, &vertex_order_);
     return L.solve_jump_laplace(reduced_coordinates(m_, arc_jumps_from_chain(m_, chain), endpoint));
   }
@@ -295,7 +299,8 @@ private:
   std::size_t clamped_weights_ = 0;
   Two_form_laplacian<LA> hodge_;
   mutable std::vector<std::size_t> border_loops_;
-  mutable std::vector<std::size_t> vertex_order_;   // elimination order of the jump Laplacian
+  mutable std::vector<std::size_t> vertex_order_;   // elimination order of the jump Laplacian (empty: by vertex)
+  mutable bool vertex_order_computed_ = false;
 };
 
 } // namespace internal
