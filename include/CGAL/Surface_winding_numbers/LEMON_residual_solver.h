@@ -231,7 +231,7 @@ public:
   int finest_band_radius() const { return finest_band_radius_; }
   /*!
   largest number of descent steps that `MULTILEVEL` takes on each level along the barriers of
-  refused certificates before it re-solves bands (default 30; 0: bands only). A step costs one
+  refused certificates before it re-solves bands (default 1000; 0: bands only). A step costs one
   line search and one certificate started from the previous flow; on the finest level of the
   benchmark it replaces the band refinements. Changes the running time, never the optimum.
   */
@@ -1750,7 +1750,7 @@ private:
   bool concurrent_max_flows_ = true;
   std::size_t concurrent_max_flow_nodes_ = 500000;
   std::size_t narrow_curve_band_nodes_ = 1000000;
-  std::size_t descent_steps_ = 30;
+  std::size_t descent_steps_ = 1000;
   int finest_band_radius_ = 8;
   bool fallback_ = false;
   bool verbose_ = false;
