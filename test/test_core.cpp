@@ -1,6 +1,7 @@
 // Stage-by-stage tests of the numerical core (flat tables), of the LP traits and of the solver class.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/surface_winding_numbers.h>
 #include <CGAL/Surface_winding_numbers/GLPK_linear_program_traits.h>
 #include <CGAL/Surface_winding_numbers/internal/pipeline.h>
@@ -497,6 +498,139 @@ TEST(HarmonicPart, GammaIsClosedToRoundOffAndKeepsThePeriod)
   EXPECT_LE(std::abs(period), 1. + 1e-9);
 }
 
+namespace {
+// the period of a 1-form (per table edge) along a closed vertex loop
+double period(const Mesh& m, const SWN::Surface_winding_numbers_solver<Mesh>& s, const std::vector<Vertex>& loop,
+              const std::vector<double>& form)
+{
+  double sum = 0;
+  for(std::size_t i = 0; i < loop.size(); ++i)
+  {
+    const auto h = halfedge(loop[i], loop[(i + 1) % loop.size()], m);
+    EXPECT_TRUE(h.second);
+    const std::size_t e = s.edge_index(edge(h.first, m));
+    sum += (s.tables().ev[2 * e] == s.vertex_index(loop[i]) ? 1. : -1.) * form[e];
+  }
+  return sum;
+}
+
+double max_abs(const std::vector<double>& x)
+{
+  double r = 0;
+  for(double v : x) r = std::max(r, std::abs(v));
+  return r;
+}
+
+// d0^T S1 form per vertex (the divergence of the form)
+std::vector<double> codifferential(const SI::Mesh_tables& t, const std::vector<double>& star, const std::vector<double>& form)
+{
+  std::vector<double> d(t.nv, 0.);
+  for(std::size_t e = 0; e < t.ne; ++e)
+  {
+    d[t.ev[2 * e + 1]] += star[e] * form[e];
+    d[t.ev[2 * e]] -= star[e] * form[e];
+  }
+  return d;
+}
+} // namespace
+
+TEST(HarmonicPart, CohomologyGeneratorsSpanTheClassesOfEveryComponent)
+{
+  // one mesh, two components: a torus (2 classes) and a torus with two holes (2g + b - 1 = 3)
+  Mesh m;
+  const int nu = 12, nv = 8;
+  const auto vs = torus_mesh(m, nu, nv);
+  torus_mesh(m, 14, 9);
+  for(int f : {2 * nu * nv + 10, 2 * nu * nv + 130}) CGAL::Euler::remove_face(halfedge(Mesh::Face_index(f), m), m);
+  m.collect_garbage();
+  SWN::Surface_winding_numbers_solver<Mesh> s(m);
+  const SI::Mesh_tables& t = s.tables();
+  ASSERT_EQ(t.n_components, 2u);
+  const SI::Cohomology_generators gen = SI::cohomology_generators(t);
+  EXPECT_TRUE(gen.complete);
+  ASSERT_EQ(gen.size(), 5u);
+  std::vector<std::size_t> classes(2, 0);
+  for(std::size_t e : gen.edges) ++classes[t.face_component[t.edge_sides[t.edge_side_begin[e]] / 3]];
+  EXPECT_EQ(classes[t.face_component[0]], 2u);
+  EXPECT_EQ(classes[1 - t.face_component[0]], 3u);
+
+  std::vector<double> w;
+  SI::cotan_weights(t, w);
+  const std::vector<double> star = SI::edge_hodge_star(t, w);
+  SI::Harmonic_basis<LA> basis;
+  basis.assemble(t, w, star, gen);   // throws if the Gram matrix of the h_k is singular
+  ASSERT_TRUE(basis.assembled());
+  std::vector<Vertex> meridian, longitude;
+  for(int j = 0; j < nv; ++j) meridian.push_back(vs[std::size_t(3 * nv + j)]);
+  for(int i = 0; i < nu; ++i) longitude.push_back(vs[std::size_t(i * nv + 5)]);
+  double largest_period = 0;
+  for(std::size_t k = 0; k < gen.size(); ++k)
+  {
+    std::vector<double> zeta(t.ne, 0.);
+    for(const auto& z : gen.closed_form(t, k))
+    {
+      EXPECT_EQ(std::abs(z.second), 1.);
+      zeta[z.first] = z.second;
+    }
+    EXPECT_EQ(zeta[gen.edges[k]], 1.);
+    for(std::size_t j = 0; j < gen.size(); ++j)
+      if(j != k) EXPECT_EQ(zeta[gen.edges[j]], 0.);
+    EXPECT_EQ(max_abs(SI::face_curl(t, zeta)), 0.);   // exactly closed
+    // its harmonic part is closed and co-closed, a projection, and differs from zeta by an exact
+    // form: the same periods
+    const std::vector<double> h = basis.harmonic_part(zeta);
+    EXPECT_LT(max_abs(SI::face_curl(t, h)), 1e-12);
+    EXPECT_LT(max_abs(codifferential(t, star, h)), 1e-10);
+    const std::vector<double> hh = basis.harmonic_part(h);
+    for(std::size_t e = 0; e < t.ne; ++e) EXPECT_NEAR(hh[e], h[e], 1e-10);
+    for(const auto& loop : {meridian, longitude})
+    {
+      const double p = period(m, s, loop, zeta);
+      EXPECT_NEAR(period(m, s, loop, h), p, 1e-10);
+      largest_period = std::max(largest_period, std::abs(p));
+    }
+  }
+  EXPECT_EQ(largest_period, 1.);   // the torus's classes are dual to its meridian and longitude
+}
+
+TEST(HarmonicPart, HarmonicBasisAndTwoFormLaplacianGiveTheSameGamma)
+{
+  // an open curve on a torus with a hole (2g + b - 1 = 2 classes): omega of the jump harmonic function has no exact part
+  // (App. A), so removing its coexact part (2-form Laplacian) and projecting on the harmonic forms
+  // give the same gamma
+  Mesh m;
+  const int nu = 20, nv = 10;
+  const auto vs = torus_mesh(m, nu, nv);
+  CGAL::Euler::remove_face(halfedge(Mesh::Face_index(2 * (12 * nv + 3)), m), m);
+  m.collect_garbage();
+  SWN::Surface_winding_numbers_solver<Mesh> s(m);
+  const SI::Mesh_tables& t = s.tables();
+  std::vector<Vertex> a, loop;
+  for(int j = 0; j <= 6; ++j) a.push_back(vs[std::size_t(2 * nv + j)]);
+  for(int i = 5; i <= 9; ++i) loop.push_back(vs[std::size_t(i * nv + 1)]);
+  for(int j = 2; j <= 4; ++j) loop.push_back(vs[std::size_t(9 * nv + j)]);
+  const std::vector<double> chain = table_chain(m, s, {a, loop});
+  const std::vector<char> endpoint = SI::interior_endpoints(t, chain);
+  std::vector<double> w;
+  SI::cotan_weights(t, w);
+  SI::Jump_laplace_system<LA> L;
+  L.jump_laplacian(t, w, endpoint);
+  const std::vector<double> u = L.solve_jump_laplace(SI::reduced_coordinates(t, SI::arc_jumps_from_chain(t, chain), endpoint));
+  const std::vector<double> omega = SI::darboux_derivative(t, u, endpoint);
+  const std::vector<double> star = SI::edge_hodge_star(t, w);
+  SI::Two_form_laplacian<LA> B;
+  B.assemble(t, star);
+  SI::Harmonic_basis<LA> H;
+  const SI::Cohomology_generators gen = SI::cohomology_generators(t);
+  ASSERT_TRUE(gen.complete);
+  EXPECT_EQ(gen.size(), 2u);
+  H.assemble(t, w, star, gen);
+  const std::vector<double> g1 = B.harmonic_part(omega), g2 = H.harmonic_part(omega);
+  EXPECT_GT(max_abs(g1), 0.01);
+  for(std::size_t e = 0; e < t.ne; ++e) EXPECT_NEAR(g1[e], g2[e], 1e-9);
+  EXPECT_LT(max_abs(SI::face_curl(t, g2)), 1e-12);
+}
+
 TEST(LinearProgramTraits, StatusAndDuplicates)
 {
   SWN::GLPK_linear_program_traits lp;
@@ -920,6 +1054,38 @@ TEST(ReducedResidual, AgreesWithTheExactResidualOnSeparatedCurves)
   EXPECT_TRUE(reduced.reduced_residual);
   EXPECT_LT(reduced.lp_variables * 10, exact.lp_variables);
   s.expect_same_analytic_answer(m, nv);
+}
+
+TEST(Solver, HarmonicBasisAndTwoFormLaplacianGiveTheSameAnswer)
+{
+  // the same solve with the Hodge projection on the harmonic basis (the default at 2 classes) and
+  // with the 2-form Laplacian (harmonic_basis_max_classes = 0)
+  Mesh m;
+  const int nu = 24, nv = 12;
+  const auto chain_map = broken_meridian_and_loop(m, nu, nv);
+  ASSERT_FALSE(::testing::Test::HasFailure());
+  std::vector<SI::Core_result> results;
+  std::vector<SWN::Solve_report> reports;
+  for(std::size_t max_classes : {SI::harmonic_basis_max_classes, std::size_t(0)})
+  {
+    SWN::Surface_winding_numbers_solver<Mesh> s(m);
+    std::vector<double> chain(num_edges(m), 0.);
+    for(auto e : edges(m)) chain[s.edge_index(e)] = get(chain_map, e);
+    SI::Solve_options options;
+    options.harmonic_basis_max_classes = max_classes;
+    SWN::LEMON_residual_solver lp;
+    reports.emplace_back();
+    results.push_back(s.core().solve(chain, options, lp, reports.back()));
+    EXPECT_TRUE(reports.back().hodge_projection);
+  }
+  EXPECT_EQ(results[0].labels, results[1].labels);
+  EXPECT_EQ(results[0].G, results[1].G);
+  for(std::size_t k = 0; k < results[0].w.size(); ++k)
+    if(std::isfinite(results[0].w[k]) || std::isfinite(results[1].w[k])) EXPECT_NEAR(results[0].w[k], results[1].w[k], 1e-8);
+  EXPECT_NEAR(reports[0].lp_objective, reports[1].lp_objective, 1e-9 * (1 + reports[1].lp_objective));
+  int inside = 0;
+  for(int l : results[0].labels) inside += l == 1;
+  EXPECT_EQ(inside, 2 * 5 * 4);
 }
 
 TEST(ConcurrentFactorizations, SameAnswerAsSequential)

@@ -473,10 +473,11 @@ TEST(LemonResidual, DescentStepsReachTheOptimumWithoutBands)
 TEST(LemonResidual, SymmetricTorusWithALongGapIsCertifiedByDescentSteps)
 {
   // a regular 160 x 139 torus (44k faces) with an 8-vertex piece of a meridian (a gap of 131 edges) and a
-  // small closed loop: many completions of the meridian have the same length, and the finest level needs
-  // about 80 descent steps. With at most 30 (the default until 2026-12-03) the rest went to band
-  // refinements of up to 51k nodes (benchmark/residual_solvers.md); with the default now the finest
-  // level is certified without any band refinement
+  // small closed loop: many completions of the meridian have the same length. With gamma from the
+  // 2-form Laplacian the finest level needed about 80 descent steps, and with at most 30 (the default
+  // until 2026-12-03) the rest went to band refinements of up to 51k nodes at ~10 s each
+  // (benchmark/residual_solvers.md); with gamma projected on the harmonic basis it needs 8. Either
+  // way the finest level must be certified by descent steps, without any band refinement
   Mesh m;
   const int nu = 160, nv = 139;
   auto vs = torus_mesh(m, nu, nv);
@@ -501,7 +502,7 @@ TEST(LemonResidual, SymmetricTorusWithALongGapIsCertifiedByDescentSteps)
   const Lemon::Statistics& st = lemon.statistics();
   EXPECT_TRUE(st.certified);
   EXPECT_EQ(st.refinements, 0u);
-  EXPECT_GT(st.descent_steps, 30u);
+  EXPECT_GT(st.descent_steps, 0u);
   int inside = 0;
   for(const auto& l : labels) inside += l.second == 1;
   EXPECT_EQ(inside, 2 * 4 * 3);

@@ -6,6 +6,10 @@
 
 #include <CGAL/Surface_winding_numbers/internal/mesh_tables.h>
 
+#ifdef CGAL_EIGEN3_ENABLED
+#include <Eigen/Core>
+#endif
+
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -94,6 +98,36 @@ inline std::vector<double> reduced_coordinates(const Mesh_tables& m, const std::
   }
   return c;
 }
+
+// X = A^-1 B for the k columns of B (n x k, column-major) with a factorized `la`: one solve per column,
+// or a single pass over the factorization for all of them when the traits expose an Eigen solver
+// (CGAL::Eigen_solver_traits; CHOLMOD's supernodal solve then works on blocks of columns).
+template <class LA>
+bool solve_columns(LA& la, const std::vector<double>& B, std::size_t n, std::size_t k, std::vector<double>& X, long)
+{
+  typename LA::Vector b(static_cast<int>(n)), x(static_cast<int>(n));
+  X.resize(n * k);
+  for(std::size_t j = 0; j < k; ++j)
+  {
+    for(std::size_t i = 0; i < n; ++i) b[i] = B[j * n + i];
+    if(!la.linear_solver(b, x)) return false;
+    for(std::size_t i = 0; i < n; ++i) X[j * n + i] = x[i];
+  }
+  return true;
+}
+
+#ifdef CGAL_EIGEN3_ENABLED
+template <class LA>
+auto solve_columns(LA& la, const std::vector<double>& B, std::size_t n, std::size_t k, std::vector<double>& X, int)
+  -> decltype(la.solver().solve(Eigen::MatrixXd()), bool())
+{
+  const Eigen::Map<const Eigen::MatrixXd> b(B.data(), Eigen::Index(n), Eigen::Index(k));
+  const Eigen::MatrixXd x = la.solver().solve(b);
+  if(la.solver().info() != Eigen::Success) return false;
+  X.assign(x.data(), x.data() + n * k);
+  return true;
+}
+#endif
 
 // The jump Laplace system (paper Eqs. 6-8, 10) on V* = vertices minus interior endpoints. The
 // constant null space of every connected component of V* is removed exactly by pinning the
@@ -187,6 +221,30 @@ public:
     for(std::size_t k = 0; k < 3 * m.nf; ++k)
       u[k] = excluded_[m.fv[k]] ? std::numeric_limits<double>::quiet_NaN() : u0[m.fv[k]] + c[k];
     return u;
+  }
+
+  // Solves L x_j = b_j for right-hand sides given per vertex (b[j][v]); entries at pinned and
+  // excluded vertices are not used, and x_j is 0 there. With no excluded vertex, L is the 0-form
+  // Laplacian d0^T S1 d0 of the Hodge decomposition (its edge weights are the Hodge star S1).
+  std::vector<std::vector<double>> solve_vertex_laplace(const std::vector<std::vector<double>>& b) const
+  {
+    const Mesh_tables& m = *m_;
+    const std::size_t k = b.size();
+    std::vector<std::vector<double>> x(k, std::vector<double>(m.nv, 0.));
+    if(n_ == 0 || k == 0) return x;
+    std::vector<double> B(n_ * k), X;
+    for(std::size_t j = 0; j < k; ++j)
+      for(std::size_t v = 0; v < m.nv; ++v)
+        if(dof_[v] != npos) B[j * n_ + dof_[v]] = b[j][v];
+    if(!solve_columns(*la_, B, n_, k, X, 0)) throw Solver_failure("0-form Laplace solve failed");
+    for(std::size_t j = 0; j < k; ++j)
+      for(std::size_t v = 0; v < m.nv; ++v)
+        if(dof_[v] != npos)
+        {
+          x[j][v] = X[j * n_ + dof_[v]];
+          if(!std::isfinite(x[j][v])) throw Solver_failure("0-form Laplace solve produced non-finite values");
+        }
+    return x;
   }
 
   std::size_t size() const { return n_; }

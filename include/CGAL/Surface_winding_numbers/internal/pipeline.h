@@ -40,6 +40,7 @@ struct Solve_options
   bool reduced_residual = false;   // paper Sec. 6 instead of the exact Eq. 11
   bool concurrent_factorizations = true;   // 2-form Laplacian factorized on a second thread
   bool keep_hodge_factorization = true;    // false: freed after the harmonic part, before the residual
+  std::size_t harmonic_basis_max_classes = internal::harmonic_basis_max_classes;   // else the 2-form Laplacian
 };
 
 struct Core_result
@@ -70,8 +71,8 @@ template <class LA>
 class Winding_number_core
 {
 public:
-  // Per-mesh work: validation, cotan weights, Hodge star. The 2-form Laplacian is factorized the
-  // first time an open curve needs the Hodge projection, then kept.
+  // Per-mesh work: validation, cotan weights, Hodge star. The harmonic basis (or the 2-form
+  // Laplacian) is computed the first time an open curve needs the Hodge projection, then kept.
   explicit Winding_number_core(Mesh_tables tables) : m_(std::move(tables))
   {
     if(m_.nf == 0) throw Invalid_input("the mesh has no face");
@@ -134,15 +135,17 @@ public:
     Core_result r;
     rep.homology_correction = !m_.all_components_disks_or_spheres();
     const bool open_curve = rep.interior_endpoints > 0;   // the homology correction needs the Hodge projection
-    // The 2-form Laplacian does not depend on the curve: when the Hodge projection will need it, it
-    // is assembled and factorized on a second thread while this one solves for u. Its time counts
-    // in the Hodge step as far as it is waited for.
+    // The Hodge projection does not depend on the curve: when it will be needed, the harmonic basis
+    // (or the 2-form Laplacian) is computed on a second thread while this one solves for u. Its time
+    // counts in the Hodge step as far as it is waited for.
+    compute_vertex_order();   // read by both threads
     std::future<void> hodge_factorization;
 #ifdef CGAL_HAS_THREADS
-    if(options.concurrent_factorizations && rep.homology_correction && open_curve && !hodge_.assembled())
+    if(options.concurrent_factorizations && rep.homology_correction && open_curve && !hodge_ready())
     {
-      try { hodge_factorization = std::async(std::launch::async, [this] { hodge_.assemble(m_, star_); }); }
-      catch(const std::system_error&) {}   // no thread available: factorized when needed
+      const std::size_t max_classes = options.harmonic_basis_max_classes;
+      try { hodge_factorization = std::async(std::launch::async, [this, max_classes] { prepare_hodge_projection(max_classes); }); }
+      catch(const std::system_error&) {}   // no thread available: computed when needed
     }
 #endif
     // u: jump Laplace solve (Eq. 10) with jumps Gamma
@@ -167,8 +170,11 @@ public:
     {
       // omega = D u (Eq. 5); gamma = harmonic part (Eq. 9) when the curve has interior endpoints
       if(hodge_factorization.valid()) hodge_factorization.get();   // rethrows a failed factorization
-      const std::vector<double> gamma = harmonic_part_of(r.u, endpoint, open_curve);
-      if(!options.keep_hodge_factorization) hodge_.release();
+      const std::vector<double> gamma = harmonic_part_of(r.u, endpoint, open_curve, options.harmonic_basis_max_classes);
+      if(verbose && open_curve)
+        std::cerr << "[swn] harmonic part: " << (basis_.assembled() ? "projection on " + std::to_string(basis_.size()) +
+                                                 " harmonic 1-forms" : std::string("2-form Laplace solve")) << "\n";
+      if(!options.keep_hodge_factorization) { basis_.release(); hodge_.release(); }
       rep.hodge_projection = open_curve;
       rep.time_hodge = clock.lap();
       if(verbose) std::cerr << "[swn] Darboux derivative and harmonic part: " << rep.time_hodge << " s\n";
@@ -220,33 +226,47 @@ public:
   std::vector<double> first_jump_laplace_solve(const std::vector<double>& chain, const std::vector<char>& endpoint,
                                                Jump_laplace_system<LA>& L) const
   {
-    if(!vertex_order_computed_)   // once per mesh
-    {
-      vertex_order_ = vertex_elimination_order(m_);
-      vertex_order_computed_ = true;
-    }
+    compute_vertex_order();
     L.jump_laplacian(m_, weight_, endpoint, &vertex_order_);
     return L.solve_jump_laplace(reduced_coordinates(m_, arc_jumps_from_chain(m_, chain), endpoint));
   }
 
   // gamma: the Darboux derivative of u (Eq. 5), projected to its harmonic part (Eq. 9) when the curve
   // has interior endpoints
-  std::vector<double> harmonic_part_of(const std::vector<double>& u, const std::vector<char>& endpoint, bool open_curve)
+  std::vector<double> harmonic_part_of(const std::vector<double>& u, const std::vector<char>& endpoint, bool open_curve,
+                                       std::size_t max_classes = harmonic_basis_max_classes)
   {
     std::vector<double> gamma = darboux_derivative(m_, u, endpoint);
     if(!open_curve) return gamma;
-    if(!hodge_.assembled()) hodge_.assemble(m_, star_);
-    return hodge_.harmonic_part(gamma);
+    prepare_hodge_projection(max_classes);
+    return basis_.assembled() ? basis_.harmonic_part(gamma) : hodge_.harmonic_part(gamma);
   }
 
+  // The per-mesh part of the Hodge projection: the harmonic basis when the mesh has at most
+  // `max_classes` cohomology classes, else the factorized 2-form Laplacian. Nothing if either is there.
+  void prepare_hodge_projection(std::size_t max_classes)
+  {
+    if(hodge_ready()) return;
+    const Cohomology_generators gen = cohomology_generators(m_);
+    if(gen.complete && gen.size() <= max_classes)
+    {
+      compute_vertex_order();
+      basis_.assemble(m_, weight_, star_, gen, &vertex_order_);
+    }
+    else hodge_.assemble(m_, star_);
+  }
+  bool hodge_ready() const { return basis_.assembled() || hodge_.assembled(); }
+
   // The residual problem (Eq. 11) of a chain, as solve() builds it (for tests and benchmarks).
-  Residual_problem residual_problem_of(const std::vector<double>& chain, double epsilon)
+  Residual_problem residual_problem_of(const std::vector<double>& chain, double epsilon,
+                                       std::size_t max_classes = harmonic_basis_max_classes)
   {
     const std::vector<char> endpoint = interior_endpoints(m_, chain);
     Jump_laplace_system<LA> L;
     const std::vector<double> u = first_jump_laplace_solve(chain, endpoint, L);
     const bool open_curve = std::find(endpoint.begin(), endpoint.end(), 1) != endpoint.end();
-    return residual_problem(m_, local_integration(m_, harmonic_part_of(u, endpoint, open_curve)), chain, epsilon);
+    return residual_problem(m_, local_integration(m_, harmonic_part_of(u, endpoint, open_curve, max_classes)), chain,
+                            epsilon);
   }
 
   void fill_mesh_report(Solve_report& rep) const
@@ -275,6 +295,13 @@ public:
   }
 
 private:
+  void compute_vertex_order() const
+  {
+    if(vertex_order_computed_) return;   // once per mesh
+    vertex_order_ = vertex_elimination_order(m_);
+    vertex_order_computed_ = true;
+  }
+
   void count_border_loops() const
   {
     border_loops_.assign(m_.n_components, 0);
@@ -297,6 +324,7 @@ private:
   Mesh_tables m_;
   std::vector<double> weight_, star_;
   std::size_t clamped_weights_ = 0;
+  Harmonic_basis<LA> basis_;
   Two_form_laplacian<LA> hodge_;
   mutable std::vector<std::size_t> border_loops_;
   mutable std::vector<std::size_t> vertex_order_;   // elimination order of the jump Laplacian (empty: by vertex)
