@@ -174,7 +174,7 @@ std::future<void> start_task(bool sequential, Task task)
   return std::async(std::launch::deferred, task);
 }
 
-// The jump Laplacian and the Hodge step's 2-form Laplacian are factorized side by side on two threads. Under
+// The jump Laplacian and the Hodge step's Laplacian are factorized side by side on two threads. Under
 // them, CHOLMOD (SuiteSparse 5) runs parts of its supernodal factorization in OpenMP regions of a
 // fixed four threads, and OpenBLAS keeps its own pool: together they put many more threads than
 // cores on the machine, and the first solve of DoubleTorusWithLoops took 0.12-0.30 s instead of

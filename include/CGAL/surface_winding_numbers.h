@@ -107,12 +107,12 @@ connected component, the label covering the largest area is 0.
     \cgalParamDefault{`false`}
   \cgalParamNEnd
   \cgalParamNBegin{Surface_winding_numbers::parameters::concurrent_factorizations}
-    \cgalParamDescription{when the curve has interior endpoints on a mesh with handles, factorizes the 2-form Laplacian of the Hodge projection on a second thread (`std::async`) while the first jump-Laplace system is factorized and solved; same results either way. Set it to `false` if the sparse linear solver cannot run two factorizations at once}
+    \cgalParamDescription{when the curve has interior endpoints on a mesh with handles, computes the per-mesh part of the Hodge projection (the harmonic basis, or the factorized 2-form Laplacian on meshes with more than 24 homology classes) on a second thread (`std::async`) while the first jump-Laplace system is factorized and solved; same results either way. Set it to `false` if the sparse linear solver cannot run two factorizations at once}
     \cgalParamType{Boolean}
     \cgalParamDefault{`true` (`false` without `CGAL_HAS_THREADS`)}
   \cgalParamNEnd
   \cgalParamNBegin{Surface_winding_numbers::parameters::keep_hodge_factorization}
-    \cgalParamDescription{ignored here: this function solves once, and frees the factorization of the 2-form Laplacian as soon as the harmonic part is computed, before the residual step (lower peak memory). `Surface_winding_numbers_solver::solve()` keeps it by default for the next solve on the same mesh}
+    \cgalParamDescription{ignored here: this function solves once, and frees the per-mesh part of the Hodge projection as soon as the harmonic part is computed, before the residual step (lower peak memory). `Surface_winding_numbers_solver::solve()` keeps it by default for the next solve on the same mesh}
     \cgalParamType{Boolean}
     \cgalParamDefault{`false`}
   \cgalParamNEnd
@@ -140,7 +140,7 @@ bool surface_winding_numbers(const TriangleMesh& tm, const ChainMap& chain, Labe
   typedef std::conditional_t<std::is_same<Solver_param, CGAL::Default>::value, CGAL::Default,
                              std::remove_cv_t<std::remove_reference_t<Solver_param>>> LA;
   Surface_winding_numbers::Surface_winding_numbers_solver<TriangleMesh, LA> solver(tm, np);
-  // one solve: the 2-form Laplacian's factorization is freed before the residual step
+  // one solve: the per-mesh part of the Hodge projection is freed before the residual step
   return solver.solve(chain, labels, Surface_winding_numbers::parameters::keep_hodge_factorization(false, np));
 }
 

@@ -124,8 +124,9 @@ typedef Eigen_LDLT_sparse_solver Default_sparse_solver;
 
 The constructor extracts the mesh into flat index tables (renumbered for memory locality when the
 mesh's own numbering is scattered; results and error messages use the mesh's own order), checks it (triangles only, finite
-coordinates, no zero-area face) and computes the cotan weights. The 2-form Laplacian used by the
-Hodge projection is factorized the first time a curve with interior endpoints needs it and then
+coordinates, no zero-area face) and computes the cotan weights. The Hodge projection's per-mesh part
+(a basis of the harmonic 1-forms; the factorized 2-form Laplacian on meshes with more than 24
+homology classes) is computed the first time a curve with interior endpoints needs it and then
 kept (unless `solve()` gets `keep_hodge_factorization(false)`). The jump Laplacian depends on the curve's endpoints: it is factorized once per `solve()` and
 used for both of its jump Laplace solves.
 

@@ -72,13 +72,14 @@ CGAL_SWN_NAMED_PARAMETER(lp_solver_t, lp_solver)
 /// `true`: approximate the residual function by the reduced problem of the paper's Sec. 6 (gaps
 /// closed by shortest paths, one shift per region); default `false` (the exact Eq. 11)
 CGAL_SWN_NAMED_PARAMETER(use_reduced_residual_t, use_reduced_residual)
-/// `true` (the default, where `CGAL_HAS_THREADS` is defined): when the Hodge projection is needed, the
-/// 2-form Laplacian is factorized on a second thread while the first jump-Laplace system is; `false`:
+/// `true` (the default, where `CGAL_HAS_THREADS` is defined): when the Hodge projection is needed, its
+/// per-mesh part (the harmonic basis, or the 2-form Laplacian's factorization beyond 24 homology
+/// classes) is computed on a second thread while the first jump-Laplace system is factorized; `false`:
 /// one after the other, on the calling thread. Same results either way (see
 /// `use_single_threaded_openblas()` for OpenBLAS)
 CGAL_SWN_NAMED_PARAMETER(concurrent_factorizations_t, concurrent_factorizations)
-/// `true` (the default of `Surface_winding_numbers_solver::solve()`): the factorization of the 2-form
-/// Laplacian (Hodge projection; it depends on the mesh only) is kept for the next solve on the same
+/// `true` (the default of `Surface_winding_numbers_solver::solve()`): the per-mesh part of the Hodge
+/// projection (the harmonic basis, or the factorized 2-form Laplacian) is kept for the next solve on the same
 /// mesh; `false` (what `CGAL::surface_winding_numbers()` passes, its solver serving one solve): it is
 /// freed as soon as the harmonic part is computed, before the residual step, whose arrays then reuse
 /// its memory. Same results either way

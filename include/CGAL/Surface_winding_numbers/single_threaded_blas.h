@@ -18,8 +18,8 @@ namespace Surface_winding_numbers {
 \ingroup PkgSurfaceWindingNumbersRef
 Asks OpenBLAS, when it is the BLAS under CHOLMOD in this process, to run each of its dense kernels
 on the calling thread only, unless the environment variable `OPENBLAS_NUM_THREADS` is set (which
-then wins). The solver factorizes the 2-form Laplacian of the Hodge projection on a second thread
-while it factorizes the jump Laplacian (named parameter `concurrent_factorizations`); with
+then wins). The solver factorizes the Laplacian of the Hodge projection (vertex or 2-form) on a
+second thread while it factorizes the jump Laplacian (named parameter `concurrent_factorizations`); with
 OpenBLAS's own thread pool the two factorizations fight over the same cores, with one thread each
 they run side by side. Measured on 2 cores: the whole `swn` run on DoubleTorusWithLoops 0.48 s instead
 of 0.58 s, the first solve and the Hodge step of a 1.15M-face genus-10 mesh 10.5 s instead of

@@ -38,7 +38,7 @@ struct Solve_options
   double epsilon = 0.01;
   bool verbose = false;
   bool reduced_residual = false;   // paper Sec. 6 instead of the exact Eq. 11
-  bool concurrent_factorizations = true;   // 2-form Laplacian factorized on a second thread
+  bool concurrent_factorizations = true;   // the Hodge projection's per-mesh part on a second thread
   bool keep_hodge_factorization = true;    // false: freed after the harmonic part, before the residual
   std::size_t harmonic_basis_max_classes = internal::harmonic_basis_max_classes;   // else the 2-form Laplacian
 };
