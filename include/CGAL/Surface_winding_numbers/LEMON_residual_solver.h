@@ -1441,8 +1441,9 @@ private:
   // a negative slope; the step takes the side whose pieces lower the cost more. One common t for
   // all of S, stopped by the nearest breakpoint of any piece, took 32 steps (21 on the finest level)
   // on a problem of 1.15M faces where this takes 10 (6; benchmark/residual_solvers.md). The cost
-  // drops strictly; false (pi unchanged) if no piece has a negative slope at t = 0.
-  bool descend_along_barrier(const Level& lv, Int U, std::vector<Int>& pi, const std::vector<char>& S)
+  // drops strictly; false (pi unchanged) if no piece has a negative slope at t = 0. `decrease` gets
+  // the (scaled) decrease of the cost.
+  bool descend_along_barrier(const Level& lv, Int U, std::vector<Int>& pi, const std::vector<char>& S, double& decrease)
   {
     std::vector<std::size_t> piece_up, piece_down;
     std::vector<Int> step_up, step_down;
@@ -1450,6 +1451,7 @@ private:
     const double down = descent_by_pieces(lv, U, pi, S, 0, piece_down, step_down);
     if(!(up > 0) && !(down > 0)) return false;
     const bool raise = up >= down;
+    decrease = raise ? up : down;
     const std::vector<std::size_t>& piece = raise ? piece_up : piece_down;
     const std::vector<Int>& step = raise ? step_up : step_down;
     std::size_t moved = 0;
@@ -1587,7 +1589,8 @@ private:
   {
     Level& lv = levels[l];
     std::vector<char> barrier;
-    std::size_t descents = 0, round = 0;
+    std::size_t descents = 0, round = 0, repeats = 0;
+    double decrease = 0, previous[2] = {-1, -1};   // of this step and of the two before
     bool after_descent = false;
     for(;;)
     {
@@ -1603,11 +1606,19 @@ private:
                   << " s" << (certified ? std::string() : ", barrier of " + std::to_string(nb) + " nodes") << "\n";
       }
       if(certified) return true;
-      if(descents < descent_steps_ && descend_along_barrier(lv, U, pi, barrier))
+      if(descents < descent_steps_ && repeats < zigzag_steps && descend_along_barrier(lv, U, pi, barrier, decrease))
       {
         ++descents;
         ++stats_.descent_steps;
         after_descent = true;
+        // a zigzag: every step lowers the cost by what the step two before did, the descent
+        // alternating between two barriers by small steps (seen on regular tori with a long gap:
+        // 1000 such steps, then bands anyway); after zigzag_steps of them the bands take over
+        repeats = std::abs(decrease - previous[1]) <= 1e-9 * decrease ? repeats + 1 : 0;
+        previous[1] = previous[0];
+        previous[0] = decrease;
+        if(verbose_ && repeats == zigzag_steps)
+          std::cerr << "[swn] multilevel: level " << l << ": the descent zigzags between two barriers, no more steps\n";
         continue;
       }
       if(round >= rounds) return false;
@@ -1751,6 +1762,7 @@ private:
   std::size_t concurrent_max_flow_nodes_ = 500000;
   std::size_t narrow_curve_band_nodes_ = 1000000;
   std::size_t descent_steps_ = 1000;
+  static constexpr std::size_t zigzag_steps = 16;   // steps in a row that repeat the decrease of the one two before
   int finest_band_radius_ = 8;
   bool fallback_ = false;
   bool verbose_ = false;
