@@ -557,8 +557,10 @@ TEST(HarmonicPart, CohomologyGeneratorsSpanTheClassesOfEveryComponent)
   std::vector<double> w;
   SI::cotan_weights(t, w);
   const std::vector<double> star = SI::edge_hodge_star(t, w);
+  SI::Jump_laplace_system<LA> L0;   // nothing excluded: the 0-form Laplacian
+  L0.jump_laplacian(t, w, std::vector<char>(t.nv, 0));
   SI::Harmonic_basis<LA> basis;
-  basis.assemble(t, w, star, gen);   // throws if the Gram matrix of the h_k is singular
+  basis.assemble(t, star, gen, L0);   // throws if the Gram matrix of the h_k is singular
   ASSERT_TRUE(basis.assembled());
   std::vector<Vertex> meridian, longitude;
   for(int j = 0; j < nv; ++j) meridian.push_back(vs[std::size_t(3 * nv + j)]);
@@ -624,7 +626,9 @@ TEST(HarmonicPart, HarmonicBasisAndTwoFormLaplacianGiveTheSameGamma)
   const SI::Cohomology_generators gen = SI::cohomology_generators(t);
   ASSERT_TRUE(gen.complete);
   EXPECT_EQ(gen.size(), 2u);
-  H.assemble(t, w, star, gen);
+  SI::Jump_laplace_system<LA> L0;
+  L0.jump_laplacian(t, w, std::vector<char>(t.nv, 0));
+  H.assemble(t, star, gen, L0);
   const std::vector<double> g1 = B.harmonic_part(omega), g2 = H.harmonic_part(omega);
   EXPECT_GT(max_abs(g1), 0.01);
   for(std::size_t e = 0; e < t.ne; ++e) EXPECT_NEAR(g1[e], g2[e], 1e-9);
@@ -745,6 +749,60 @@ TEST(Solver, ManyCurvesOnOneMeshMatchTheFreeFunction)
     EXPECT_TRUE(solver.report().hodge_projection);
     m.remove_property_map(chain);
   }
+}
+
+TEST(Solver, CurvesWithoutEndpointsShareTheKeptJumpLaplacian)
+{
+  // on a torus: an open curve (its Hodge step builds the 0-form Laplacian), then closed loops, whose
+  // jump Laplacian is that 0-form Laplacian: the solver class keeps its factorization, and the answers
+  // are those of the free function, which factorizes anew every time; keep_hodge_factorization(false)
+  // drops it
+  Mesh m;
+  const int nu = 20, nv = 10;
+  auto vs = torus_mesh(m, nu, nv);
+  auto V = [&](int i, int j) { return vs[std::size_t(i * nv + j)]; };
+  SWN::Surface_winding_numbers_solver<Mesh> solver(m);
+  struct Curve { std::vector<std::vector<Vertex>> polylines; bool open; int inside; };
+  std::vector<Curve> curves;
+  curves.push_back({{{V(2, 0), V(2, 1), V(2, 2), V(2, 3)}}, true, 0});    // open piece of a meridian
+  std::vector<Vertex> square, big, meridian;
+  for(int i = 5; i < 8; ++i) square.push_back(V(i, 2));
+  for(int j = 2; j < 5; ++j) square.push_back(V(8, j));
+  for(int i = 8; i > 5; --i) square.push_back(V(i, 5));
+  for(int j = 5; j >= 2; --j) square.push_back(V(5, j));
+  for(int i = 10; i < 15; ++i) big.push_back(V(i, 1));
+  for(int j = 1; j < 4; ++j) big.push_back(V(15, j));
+  for(int i = 15; i > 10; --i) big.push_back(V(i, 4));
+  for(int j = 4; j >= 1; --j) big.push_back(V(10, j));
+  for(int j = 0; j <= nv; ++j) meridian.push_back(V(17, j % nv));
+  curves.push_back({{square}, false, 2 * 3 * 3});
+  curves.push_back({{big, meridian}, false, 2 * 5 * 3});   // with a nonbounding loop
+  curves.push_back({{square}, false, 2 * 3 * 3});
+  std::vector<bool> reused;
+  for(int keep = 1; keep >= 0; --keep)
+    for(const Curve& c : curves)
+    {
+      auto chain = get(CGAL::dynamic_edge_property_t<int>(), m);
+      for(auto e : edges(m)) put(chain, e, 0);
+      for(const auto& p : c.polylines) ASSERT_TRUE(SWN::add_vertex_polyline_to_chain(m, p, chain));
+      std::map<Mesh::Face_index, int> l1, l2;
+      std::map<Mesh::Edge_index, int> G1, G2;
+      ASSERT_TRUE(solver.solve(chain, boost::make_assoc_property_map(l1),
+                               SWN::parameters::nonbounding_chain_map(boost::make_assoc_property_map(G1),
+                               SWN::parameters::keep_hodge_factorization(keep == 1)))) << solver.report().error;
+      reused.push_back(solver.report().jump_laplacian_reused);
+      EXPECT_EQ(solver.report().interior_endpoints > 0, c.open);
+      ASSERT_TRUE(CGAL::surface_winding_numbers(m, chain, boost::make_assoc_property_map(l2),
+                                                SWN::parameters::nonbounding_chain_map(boost::make_assoc_property_map(G2))));
+      EXPECT_EQ(l1, l2);
+      EXPECT_EQ(G1, G2);
+      int inside = 0;
+      for(const auto& l : l1) inside += l.second == 1;
+      if(!c.open) EXPECT_EQ(inside, c.inside);
+    }
+  // kept: the first closed curve reuses the 0-form Laplacian of the open curve's harmonic basis; dropped:
+  // nothing is reused
+  EXPECT_EQ(reused, std::vector<bool>({false, true, true, true, false, false, false, false}));
 }
 
 TEST(Solver, SurfaceMeshWithGarbageAndScaleInvariance)

@@ -68,6 +68,9 @@ struct Solve_report
   bool hodge_projection = false;     ///< `true` when the harmonic part was projected (open curves)
   bool reduced_residual = false;     ///< the residual came from the reduced problem of Sec. 6
   bool lp_ran = false;               ///< the residual function (Eq. 11) was computed
+  /// `true` when the jump Laplacian's factorization was kept from an earlier solve on the same mesh
+  /// (a curve without interior endpoints, whose jump Laplacian is the mesh's 0-form Laplacian)
+  bool jump_laplacian_reused = false;
   /// @}
   /// \name Residual linear program and weights
   /// @{

@@ -127,8 +127,11 @@ mesh's own numbering is scattered; results and error messages use the mesh's own
 coordinates, no zero-area face) and computes the cotan weights. The Hodge projection's per-mesh part
 (a basis of the harmonic 1-forms; the factorized 2-form Laplacian on meshes with more than 24
 homology classes) is computed the first time a curve with interior endpoints needs it and then
-kept (unless `solve()` gets `keep_hodge_factorization(false)`). The jump Laplacian depends on the curve's endpoints: it is factorized once per `solve()` and
-used for both of its jump Laplace solves.
+kept (unless `solve()` gets `keep_hodge_factorization(false)`). The jump Laplacian depends on the curve's
+interior endpoints: it is factorized once per `solve()` and used for both of its jump Laplace solves;
+for curves without interior endpoints (closed loops, and curves that end on the border) it is the
+mesh's 0-form Laplacian, the same for all of them, and its factorization is kept as well, so that
+such curves after the first cost only solves (`Solve_report::jump_laplacian_reused`).
 
 The mesh must not be modified while the solver is in use.
 

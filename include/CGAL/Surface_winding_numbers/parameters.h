@@ -79,7 +79,8 @@ CGAL_SWN_NAMED_PARAMETER(use_reduced_residual_t, use_reduced_residual)
 /// `use_single_threaded_openblas()` for OpenBLAS)
 CGAL_SWN_NAMED_PARAMETER(concurrent_factorizations_t, concurrent_factorizations)
 /// `true` (the default of `Surface_winding_numbers_solver::solve()`): the per-mesh part of the Hodge
-/// projection (the harmonic basis, or the factorized 2-form Laplacian) is kept for the next solve on the same
+/// projection (the harmonic basis, or the factorized 2-form Laplacian) and the factorized 0-form Laplacian
+/// (the jump Laplacian of every curve without interior endpoints) are kept for the next solve on the same
 /// mesh; `false` (what `CGAL::surface_winding_numbers()` passes, its solver serving one solve): it is
 /// freed as soon as the harmonic part is computed, before the residual step, whose arrays then reuse
 /// its memory. Same results either way

@@ -261,26 +261,23 @@ template <class LA>
 class Harmonic_basis
 {
 public:
-  // assembled() becomes true only after success
-  void assemble(const Mesh_tables& m, const std::vector<double>& side_weight, const std::vector<double>& star,
-                const Cohomology_generators& gen, const std::vector<std::size_t>* vertex_order = nullptr)
+  // assembled() becomes true only after success. L0: the factorized 0-form Laplacian, a
+  // Jump_laplace_system with no vertex excluded (the jump Laplacian of a curve without interior
+  // endpoints), built on `side_weight` with S1 = `star` as its edge weights.
+  void assemble(const Mesh_tables& m, const std::vector<double>& star, const Cohomology_generators& gen,
+                const Jump_laplace_system<LA>& L0)
   {
     m_ = nullptr;
     star_ = &star;
     const std::size_t K = gen.size();
     zeta_.assign(K, {});
-    phi_.assign(K, {});
+    std::vector<std::vector<double>> b(K, std::vector<double>(m.nv, 0.));
+    for(std::size_t k = 0; k < K; ++k)
     {
-      Jump_laplace_system<LA> L0;   // nothing excluded: the 0-form Laplacian, edge weights S1
-      L0.jump_laplacian(m, side_weight, std::vector<char>(m.nv, 0), vertex_order);
-      std::vector<std::vector<double>> b(K, std::vector<double>(m.nv, 0.));
-      for(std::size_t k = 0; k < K; ++k)
-      {
-        zeta_[k] = gen.closed_form(m, k);
-        for(const auto& z : zeta_[k]) add_codifferential(m, z.first, star[z.first] * z.second, b[k]);
-      }
-      phi_ = L0.solve_vertex_laplace(b);
+      zeta_[k] = gen.closed_form(m, k);
+      for(const auto& z : zeta_[k]) add_codifferential(m, z.first, star[z.first] * z.second, b[k]);
     }
+    phi_ = L0.solve_vertex_laplace(b);
     // Gram matrix: <h_j, h_k> = <zeta_j, h_k> because h_k is S1-orthogonal to the exact forms
     gram_.assign(K * K, 0.);
     std::vector<double> zk(m.ne, 0.);

@@ -248,6 +248,9 @@ public:
   }
 
   std::size_t size() const { return n_; }
+  bool factorized() const { return la_ != nullptr; }
+  // true if the system was built with exactly these excluded vertices
+  bool excludes(const std::vector<char>& excluded) const { return la_ != nullptr && excluded_ == excluded; }
 
 private:
   const Mesh_tables* m_ = nullptr;

@@ -25,6 +25,7 @@
 #include <cmath>
 #include <future>
 #include <iostream>
+#include <memory>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -144,15 +145,27 @@ public:
     if(options.concurrent_factorizations && rep.homology_correction && open_curve && !hodge_ready())
     {
       const std::size_t max_classes = options.harmonic_basis_max_classes;
-      try { hodge_factorization = std::async(std::launch::async, [this, max_classes] { prepare_hodge_projection(max_classes); }); }
+      const bool keep = options.keep_hodge_factorization;
+      try
+      {
+        hodge_factorization =
+          std::async(std::launch::async, [this, max_classes, keep] { prepare_hodge_projection(max_classes, keep); });
+      }
       catch(const std::system_error&) {}   // no thread available: computed when needed
     }
 #endif
-    // u: jump Laplace solve (Eq. 10) with jumps Gamma
-    Jump_laplace_system<LA> L;
+    // u: jump Laplace solve (Eq. 10) with jumps Gamma. Without interior endpoints the jump Laplacian
+    // is the 0-form Laplacian, the same for every such curve: kept from an earlier solve if there is one.
+    std::shared_ptr<Jump_laplace_system<LA>> kept = laplacian_;   // (the second thread may replace laplacian_)
+    rep.jump_laplacian_reused = !open_curve && kept && kept->excludes(endpoint);
+    std::shared_ptr<Jump_laplace_system<LA>> Lp = rep.jump_laplacian_reused ? kept : std::make_shared<Jump_laplace_system<LA>>();
+    Jump_laplace_system<LA>& L = *Lp;
     r.u = first_jump_laplace_solve(chain, endpoint, L);
+    if(!open_curve) laplacian_ = options.keep_hodge_factorization ? Lp : nullptr;
     rep.time_jump_laplace = clock.lap();
-    if(verbose) std::cerr << "[swn] jump Laplace solve (" << L.size() << " unknowns): " << rep.time_jump_laplace << " s\n";
+    if(verbose)
+      std::cerr << "[swn] jump Laplace solve (" << L.size() << " unknowns" << (rep.jump_laplacian_reused ? ", factorization kept from an earlier solve" : "")
+                << "): " << rep.time_jump_laplace << " s\n";
 
     rep.hodge_projection = false;
     rep.lp_ran = false;
@@ -170,11 +183,12 @@ public:
     {
       // omega = D u (Eq. 5); gamma = harmonic part (Eq. 9) when the curve has interior endpoints
       if(hodge_factorization.valid()) hodge_factorization.get();   // rethrows a failed factorization
-      const std::vector<double> gamma = harmonic_part_of(r.u, endpoint, open_curve, options.harmonic_basis_max_classes);
+      const std::vector<double> gamma =
+        harmonic_part_of(r.u, endpoint, open_curve, options.harmonic_basis_max_classes, options.keep_hodge_factorization);
       if(verbose && open_curve)
         std::cerr << "[swn] harmonic part: " << (basis_.assembled() ? "projection on " + std::to_string(basis_.size()) +
                                                  " harmonic 1-forms" : std::string("2-form Laplace solve")) << "\n";
-      if(!options.keep_hodge_factorization) { basis_.release(); hodge_.release(); }
+      if(!options.keep_hodge_factorization) { basis_.release(); hodge_.release(); laplacian_.reset(); }
       rep.hodge_projection = open_curve;
       rep.time_hodge = clock.lap();
       if(verbose) std::cerr << "[swn] Darboux derivative and harmonic part: " << rep.time_hodge << " s\n";
@@ -222,36 +236,46 @@ public:
     return r;
   }
 
-  // u of the first jump Laplace solve (Eq. 10); factorizes L, which the second solve reuses
+  // u of the first jump Laplace solve (Eq. 10); factorizes L (unless it is factorized already for
+  // these endpoints), which the second solve reuses
   std::vector<double> first_jump_laplace_solve(const std::vector<double>& chain, const std::vector<char>& endpoint,
                                                Jump_laplace_system<LA>& L) const
   {
     compute_vertex_order();
-    L.jump_laplacian(m_, weight_, endpoint, &vertex_order_);
+    if(!L.excludes(endpoint)) L.jump_laplacian(m_, weight_, endpoint, &vertex_order_);
     return L.solve_jump_laplace(reduced_coordinates(m_, arc_jumps_from_chain(m_, chain), endpoint));
   }
 
   // gamma: the Darboux derivative of u (Eq. 5), projected to its harmonic part (Eq. 9) when the curve
   // has interior endpoints
   std::vector<double> harmonic_part_of(const std::vector<double>& u, const std::vector<char>& endpoint, bool open_curve,
-                                       std::size_t max_classes = harmonic_basis_max_classes)
+                                       std::size_t max_classes = harmonic_basis_max_classes, bool keep = true)
   {
     std::vector<double> gamma = darboux_derivative(m_, u, endpoint);
     if(!open_curve) return gamma;
-    prepare_hodge_projection(max_classes);
+    prepare_hodge_projection(max_classes, keep);
     return basis_.assembled() ? basis_.harmonic_part(gamma) : hodge_.harmonic_part(gamma);
   }
 
   // The per-mesh part of the Hodge projection: the harmonic basis when the mesh has at most
   // `max_classes` cohomology classes, else the factorized 2-form Laplacian. Nothing if either is there.
-  void prepare_hodge_projection(std::size_t max_classes)
+  // The basis is built with the 0-form Laplacian, kept (if `keep`) as the jump Laplacian of the next
+  // curve without interior endpoints.
+  void prepare_hodge_projection(std::size_t max_classes, bool keep = true)
   {
     if(hodge_ready()) return;
     const Cohomology_generators gen = cohomology_generators(m_);
     if(gen.complete && gen.size() <= max_classes)
     {
-      compute_vertex_order();
-      basis_.assemble(m_, weight_, star_, gen, &vertex_order_);
+      std::shared_ptr<Jump_laplace_system<LA>> L0 = laplacian_;
+      if(!L0)
+      {
+        compute_vertex_order();
+        L0 = std::make_shared<Jump_laplace_system<LA>>();
+        L0->jump_laplacian(m_, weight_, std::vector<char>(m_.nv, 0), &vertex_order_);
+      }
+      basis_.assemble(m_, star_, gen, *L0);
+      if(keep) laplacian_ = L0;
     }
     else hodge_.assemble(m_, star_);
   }
@@ -326,6 +350,9 @@ private:
   std::size_t clamped_weights_ = 0;
   Harmonic_basis<LA> basis_;
   Two_form_laplacian<LA> hodge_;
+  // the factorized 0-form Laplacian: the jump Laplacian of every curve without interior endpoints,
+  // and the one of the harmonic basis; kept between solves unless keep_hodge_factorization is false
+  std::shared_ptr<Jump_laplace_system<LA>> laplacian_;
   mutable std::vector<std::size_t> border_loops_;
   mutable std::vector<std::size_t> vertex_order_;   // elimination order of the jump Laplacian (empty: by vertex)
   mutable bool vertex_order_computed_ = false;
