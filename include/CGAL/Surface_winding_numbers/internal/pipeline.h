@@ -156,16 +156,19 @@ public:
 #endif
     // u: jump Laplace solve (Eq. 10) with jumps Gamma. Without interior endpoints the jump Laplacian
     // is the 0-form Laplacian, the same for every such curve: kept from an earlier solve if there is one.
-    std::shared_ptr<Jump_laplace_system<LA>> kept = laplacian_;   // (the second thread may replace laplacian_)
-    rep.jump_laplacian_reused = !open_curve && kept && kept->excludes(endpoint);
-    std::shared_ptr<Jump_laplace_system<LA>> Lp = rep.jump_laplacian_reused ? kept : std::make_shared<Jump_laplace_system<LA>>();
+    // (No async task runs for a curve without interior endpoints: then nothing else touches laplacian_.)
+    std::shared_ptr<Jump_laplace_system<LA>> kept = open_curve ? nullptr : laplacian_;
+    rep.jump_laplacian_reused = kept && kept->excludes(endpoint);
+    const std::shared_ptr<Jump_laplace_system<LA>> Lp =
+      rep.jump_laplacian_reused ? kept : std::make_shared<Jump_laplace_system<LA>>();
     Jump_laplace_system<LA>& L = *Lp;
     r.u = first_jump_laplace_solve(chain, endpoint, L);
     if(!open_curve) laplacian_ = options.keep_hodge_factorization ? Lp : nullptr;
     rep.time_jump_laplace = clock.lap();
     if(verbose)
-      std::cerr << "[swn] jump Laplace solve (" << L.size() << " unknowns" << (rep.jump_laplacian_reused ? ", factorization kept from an earlier solve" : "")
-                << "): " << rep.time_jump_laplace << " s\n";
+      std::cerr << "[swn] jump Laplace solve (" << L.size() << " unknowns"
+                << (rep.jump_laplacian_reused ? ", factorization kept from an earlier solve" : "") << "): "
+                << rep.time_jump_laplace << " s\n";
 
     rep.hodge_projection = false;
     rep.lp_ran = false;
