@@ -1468,6 +1468,46 @@ private:
     return true;
   }
 
+  // one step along d = 1_A + 1_B, the sum of the last two barriers, when the descent zigzags
+  // between them (the valley between two alternating cuts): pi rises by t on A and B and by 2t on
+  // their intersection, with the exact line search over the kinks of the arcs whose tension moves
+  // (by (d[L] - d[R]) t). False (pi unchanged) if the cost does not drop for any t >= 1.
+  bool descend_along_two_barriers(const Level& lv, Int U, std::vector<Int>& pi, const std::vector<char>& A,
+                                  const std::vector<char>& B, double& decrease) const
+  {
+    std::vector<std::pair<Wide, Wide>> kinks;   // (2t, rise of the slope in t)
+    Wide slope = 0;
+    for(const Int_arc& e : lv.arcs)
+    {
+      const int r = (A[e.L] + B[e.L]) - (A[e.R] + B[e.R]);
+      if(r == 0) continue;
+      const Int J = tension(e, pi);
+      slope += r > 0 ? Wide(r) * Wide(right_slope(e, J, U)) : Wide(r) * Wide(left_slope(e, J, U));
+      auto add = [&](Int b)
+      {
+        const Wide t2 = 2 * (Wide(b) - Wide(J)) / r;   // exact: r is +-1 or +-2
+        if(t2 > 0) kinks.emplace_back(t2, Wide(r > 0 ? r : -r) * (Wide(right_slope(e, b, U)) - Wide(left_slope(e, b, U))));
+      };
+      add(0);
+      if(e.has_lo && e.lo != 0) add(e.lo);
+      if(e.has_up && e.up != 0 && !(e.has_lo && e.up == e.lo)) add(e.up);
+    }
+    if(slope >= 0) return false;
+    std::sort(kinks.begin(), kinks.end());
+    Wide d = slope, t2 = 0;
+    decrease = 0;
+    for(std::size_t k = 0; k < kinks.size() && d < 0; ++k)
+    {
+      decrease -= double(d) * double(kinks[k].first - t2) / 2;
+      t2 = kinks[k].first;
+      d += kinks[k].second;
+    }
+    const Int t = Int(t2 / 2);   // the slope is negative up to t2 / 2, so any integer t in [1, t2 / 2] lowers the cost
+    if(t < 1) return false;
+    for(std::size_t v = 0; v < lv.n; ++v) pi[v] += Int(A[v] + B[v]) * t;
+    return true;
+  }
+
   // the exact line search of descend_along_barrier() on the connected pieces of the nodes v with
   // S[v] == side, raised (side 1) or lowered (side 0): piece[v] gets v's piece, step[c] the shift of
   // piece c (0: it does not move); returns the decrease of the (scaled) cost, approximately
@@ -1591,6 +1631,7 @@ private:
     std::vector<char> barrier;
     std::size_t descents = 0, round = 0, repeats = 0;
     double decrease = 0, previous[2] = {-1, -1};   // of this step and of the two before
+    std::vector<char> previous_barrier;
     bool after_descent = false;
     for(;;)
     {
@@ -1617,6 +1658,16 @@ private:
         repeats = std::abs(decrease - previous[1]) <= 1e-9 * decrease ? repeats + 1 : 0;
         previous[1] = previous[0];
         previous[0] = decrease;
+        double valley = 0;
+        if(repeats >= 2 && previous_barrier.size() == barrier.size() &&
+           descend_along_two_barriers(lv, U, pi, barrier, previous_barrier, valley))
+        {
+          ++descents;
+          ++stats_.descent_steps;
+          repeats = 0;
+          if(verbose_) std::cerr << "[swn] multilevel: a step along the last two barriers (decrease " << valley << ")\n";
+        }
+        previous_barrier = barrier;
         if(verbose_ && repeats == zigzag_steps)
           std::cerr << "[swn] multilevel: level " << l << ": the descent zigzags between two barriers, no more steps\n";
         continue;
