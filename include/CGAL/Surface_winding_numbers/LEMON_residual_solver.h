@@ -164,7 +164,9 @@ public:
   tried again from its previous flow, on the
   maximum-flow graphs of the level's first certificate (kept until the level is done). These
   descent steps are taken on every level (at most `descent_steps()` per level, see
-  `set_descent_steps()`). If the certificate of the finest level is still refused, a band around
+  `set_descent_steps()`). When the steps zigzag between two sets (the same decreases, alternately), one
+  step goes along the sum of the two, and after 16 repeated decreases the level stops descending.
+  If the certificate of the finest level is still refused, a band around
   the border of the set (and only there) is re-solved by network simplex, which lowers the
   objective, and the certificate is tried again. After `max_refinements` such bands (see
   `set_multilevel_parameters()`), the whole problem goes to `NETWORK_SIMPLEX`
