@@ -595,6 +595,50 @@ TEST(HarmonicPart, CohomologyGeneratorsSpanTheClassesOfEveryComponent)
   EXPECT_EQ(largest_period, 1.);   // the torus's classes are dual to its meridian and longitude
 }
 
+namespace {
+// sparse solver traits without an Eigen solver() accessor: solve_columns() then solves column by column
+struct Opaque_solver_traits
+{
+  typedef LA::Matrix Matrix;
+  typedef LA::Vector Vector;
+  typedef LA::NT NT;
+  bool factor(const Matrix& A, NT& D) { return la.factor(A, D); }
+  bool linear_solver(const Vector& B, Vector& X) { return la.linear_solver(B, X); }
+  LA la;
+};
+} // namespace
+
+TEST(HarmonicPart, ManyColumnSolveAgreesWithColumnByColumn)
+{
+  Mesh m;
+  torus_mesh(m, 16, 9);
+  SWN::Surface_winding_numbers_solver<Mesh> s(m);
+  const SI::Mesh_tables& t = s.tables();
+  std::vector<double> w;
+  SI::cotan_weights(t, w);
+  const std::vector<char> none(t.nv, 0);
+  SI::Jump_laplace_system<LA> A;
+  SI::Jump_laplace_system<Opaque_solver_traits> B;
+  A.jump_laplacian(t, w, none);
+  B.jump_laplacian(t, w, none);
+  std::vector<std::vector<double>> rhs(3, std::vector<double>(t.nv, 0.));
+  for(std::size_t j = 0; j < 3; ++j)   // zero sum: in the range of the (pinned) Laplacian
+  {
+    rhs[j][(7 * j + 1) % t.nv] = 1;
+    rhs[j][(11 * j + 40) % t.nv] = -1;
+  }
+  const auto xa = A.solve_vertex_laplace(rhs), xb = B.solve_vertex_laplace(rhs);
+  ASSERT_EQ(xa.size(), 3u);
+  double largest = 0;
+  for(std::size_t j = 0; j < 3; ++j)
+    for(std::size_t v = 0; v < t.nv; ++v)
+    {
+      EXPECT_NEAR(xa[j][v], xb[j][v], 1e-10);
+      largest = std::max(largest, std::abs(xa[j][v]));
+    }
+  EXPECT_GT(largest, 0.01);
+}
+
 TEST(HarmonicPart, HarmonicBasisAndTwoFormLaplacianGiveTheSameGamma)
 {
   // an open curve on a torus with a hole (2g + b - 1 = 2 classes): omega of the jump harmonic function has no exact part
