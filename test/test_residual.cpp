@@ -467,9 +467,6 @@ TEST(LemonResidual, DescentStepsReachTheOptimumWithoutBands)
               several_pieces, lowerings);
 }
 
-// The certificate's maximum flow, whichever algorithm finishes it (push-relabel alone, Boost's
-// Boykov-Kolmogorov alone, or push-relabel stopped early by a tiny work budget and completed by
-// Boykov-Kolmogorov), certifies the same optimum as GLPK.
 TEST(LemonResidual, SymmetricTorusWithALongGapIsCertifiedByDescentSteps)
 {
   // a regular 160 x 139 torus (44k faces) with an 8-vertex piece of a meridian (a gap of 131 edges) and a
@@ -508,6 +505,9 @@ TEST(LemonResidual, SymmetricTorusWithALongGapIsCertifiedByDescentSteps)
   EXPECT_EQ(inside, 2 * 4 * 3);
 }
 
+// The certificate's maximum flow, whichever algorithm finishes it (push-relabel alone, Boost's
+// Boykov-Kolmogorov alone, or push-relabel stopped early by a tiny work budget and completed by
+// Boykov-Kolmogorov), certifies the same optimum as GLPK.
 TEST(LemonResidual, MultilevelMaxFlowAlgorithmsAgree)
 {
   std::size_t handed_over = 0;

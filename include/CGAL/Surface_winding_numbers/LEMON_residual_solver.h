@@ -1071,6 +1071,14 @@ private:
     return d;
   }
   static Int tension(const Int_arc& e, const std::vector<Int>& pi) { return e.sh + pi[e.L] - pi[e.R]; }
+  // calls f(b) once for every tension b where the cost of arc e has a kink: 0 and its bounds
+  template <class F>
+  static void for_each_kink(const Int_arc& e, F f)
+  {
+    f(Int(0));
+    if(e.has_lo && e.lo != 0) f(e.lo);
+    if(e.has_up && e.up != 0 && !(e.has_lo && e.up == e.lo)) f(e.up);
+  }
 
   // network simplex on a whole (small) problem, with the exact duality certificate; x gets the
   // optimal flow of each problem arc (from L to R in the sense of the subdifferential: f'-(J) <= x
@@ -1485,14 +1493,11 @@ private:
       if(r == 0) continue;
       const Int J = tension(e, pi);
       slope += r > 0 ? Wide(r) * Wide(right_slope(e, J, U)) : Wide(r) * Wide(left_slope(e, J, U));
-      auto add = [&](Int b)
+      for_each_kink(e, [&](Int b)
       {
         const Wide t2 = 2 * (Wide(b) - Wide(J)) / r;   // exact: r is +-1 or +-2
         if(t2 > 0) kinks.emplace_back(t2, Wide(r > 0 ? r : -r) * (Wide(right_slope(e, b, U)) - Wide(left_slope(e, b, U))));
-      };
-      add(0);
-      if(e.has_lo && e.lo != 0) add(e.lo);
-      if(e.has_up && e.up != 0 && !(e.has_lo && e.up == e.lo)) add(e.up);
+      });
     }
     if(slope >= 0) return false;
     std::sort(kinks.begin(), kinks.end());
@@ -1531,14 +1536,11 @@ private:
     // J moves by dir * t; the kinks of f (at 0 and at the bounds, each position once) ahead of J
     auto add_kinks = [&](std::size_t c, const Int_arc& e, Int J, int dir)
     {
-      auto add = [&](Int b)
+      for_each_kink(e, [&](Int b)
       {
         const Int t = dir > 0 ? b - J : J - b;
         if(t > 0) kinks.push_back(Kink{c, t, Wide(right_slope(e, b, U)) - Wide(left_slope(e, b, U))});
-      };
-      add(0);
-      if(e.has_lo && e.lo != 0) add(e.lo);
-      if(e.has_up && e.up != 0 && !(e.has_lo && e.up == e.lo)) add(e.up);
+      });
     };
     for(const Int_arc& e : lv.arcs)
     {

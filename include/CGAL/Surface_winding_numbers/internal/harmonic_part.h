@@ -263,7 +263,7 @@ class Harmonic_basis
 public:
   // assembled() becomes true only after success. L0: the factorized 0-form Laplacian, a
   // Jump_laplace_system with no vertex excluded (the jump Laplacian of a curve without interior
-  // endpoints), built on `side_weight` with S1 = `star` as its edge weights.
+  // endpoints), whose edge weights are S1 = `star`.
   void assemble(const Mesh_tables& m, const std::vector<double>& star, const Cohomology_generators& gen,
                 const Jump_laplace_system<LA>& L0)
   {

@@ -15,6 +15,10 @@ namespace CGAL {
 namespace Surface_winding_numbers {
 namespace internal {
 
+// from this many unknowns on, the Laplacians are numbered by nested dissection and the default
+// CHOLMOD traits factorize in that numbering (below, the mesh's numbering and AMD)
+constexpr std::size_t nested_dissection_unknowns = 150000;
+
 // Elimination order for the sparse Cholesky factorizations of the two Laplacians (jump Laplacian on
 // vertices, 2-form Laplacian on faces), by geometric nested dissection: the nodes of a part are split
 // at the median of their coordinate along the longest side of their bounding box; the nodes of the
@@ -27,10 +31,6 @@ namespace internal {
 // Used from nested_dissection_unknowns unknowns on: below, AMD's fill is lower and its analysis cheap.
 // `first`/`adjacent`: the graph in compressed rows; `xyz`: 3 coordinates per node. Returns the order
 // (order[k] is the k-th node to eliminate).
-// from this many unknowns on, the Laplacians are numbered by nested dissection and the default
-// CHOLMOD traits factorize in that numbering (below, the mesh's numbering and AMD)
-constexpr std::size_t nested_dissection_unknowns = 150000;
-
 inline std::vector<std::size_t> nested_dissection_order(const std::vector<std::size_t>& first,
                                                         const std::vector<std::size_t>& adjacent,
                                                         const std::vector<double>& xyz, std::size_t leaf = 16)
