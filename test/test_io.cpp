@@ -469,6 +469,72 @@ TEST(ReadMesh, ShuffledBunnyKeepsOrder)
   for(VI v : bunny.vertices()) ASSERT_EQ(m.point(v), bunny.point(v));
 }
 
+TEST(ReadMesh, DirectWiringEqualsFaceByFaceInsertion)
+{
+  // read_mesh() wires the halfedge structure directly from the validated soup; CGAL's face-by-face
+  // insertion (Surface_mesh::add_face) on the same faces must give the same indices and connectivity:
+  // every halfedge's target, next and face, every face's and every vertex's halfedge, borders included
+  // (annulus: two border loops; the small OBJ: an unreferenced vertex; the bunny shuffled and rotated)
+  std::vector<std::pair<std::string, std::string> > inputs;   // (name, OBJ text)
+  for(const char* file : {"annulus.obj", "bunny.obj", "torus.obj"})
+  {
+    std::ifstream in(demo + file);
+    std::ostringstream text;
+    text << in.rdbuf();
+    inputs.emplace_back(file, text.str());
+  }
+  inputs.emplace_back("small.obj", "v 0 0 0\nv 1 0 0\nv 9 9 9\nv 0 1 0\nv 1 1 0\nf 1 2 4\nf 2 5 4\n");
+  {
+    Mesh bunny;
+    IO::read_mesh(demo + "bunny.obj", bunny);
+    std::vector<std::array<std::size_t, 3> > faces;
+    for(FI f : bunny.faces()) faces.push_back(triple(bunny, f));
+    std::mt19937 rng(11);
+    std::shuffle(faces.begin(), faces.end(), rng);
+    for(auto& t : faces) std::rotate(t.begin(), t.begin() + (rng() % 3), t.end());
+    std::ostringstream os;
+    os.precision(17);
+    for(VI v : bunny.vertices()) os << "v " << bunny.point(v) << "\n";
+    for(auto& t : faces) os << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << "\n";
+    inputs.emplace_back("shuffled bunny", os.str());
+  }
+  for(const auto& input : inputs)
+  {
+    std::istringstream is(input.second);
+    Mesh m;
+    IO::read_mesh(is, "obj", input.first, m);
+    ASSERT_TRUE(m.is_valid(false)) << input.first;
+    Mesh ref;
+    for(VI v : m.vertices()) ref.add_vertex(m.point(v));
+    for(FI f : m.faces())
+    {
+      const auto t = triple(m, f);
+      const FI g = ref.add_face(VI(Mesh::size_type(t[0])), VI(Mesh::size_type(t[1])), VI(Mesh::size_type(t[2])));
+      ASSERT_EQ(g, f) << input.first;
+    }
+    ASSERT_EQ(m.number_of_halfedges(), ref.number_of_halfedges()) << input.first;
+    std::size_t border = 0;
+    for(auto h : m.halfedges())
+    {
+      ASSERT_EQ(m.target(h), ref.target(h)) << input.first << " halfedge " << h;
+      ASSERT_EQ(m.next(h), ref.next(h)) << input.first << " halfedge " << h;
+      ASSERT_EQ(m.prev(h), ref.prev(h)) << input.first << " halfedge " << h;
+      ASSERT_EQ(m.face(h), ref.face(h)) << input.first << " halfedge " << h;
+      border += m.is_border(h);
+    }
+    for(VI v : m.vertices())
+    {
+      // any incoming halfedge will do inside; on a border, the incoming border halfedge
+      if(ref.is_isolated(v)) { ASSERT_TRUE(m.is_isolated(v)); continue; }
+      ASSERT_EQ(m.target(m.halfedge(v)), v);
+      ASSERT_EQ(m.is_border(v), ref.is_border(v)) << input.first << " vertex " << v;
+      if(ref.is_border(v)) ASSERT_EQ(m.halfedge(v), ref.halfedge(v)) << input.first << " vertex " << v;
+    }
+    for(FI f : m.faces()) ASSERT_EQ(m.target(m.halfedge(f)), VI(Mesh::size_type(triple(m, f)[0])));
+    if(input.first == "annulus.obj") EXPECT_GT(border, 0u);
+  }
+}
+
 TEST(ReadMesh, DemoMeshes)
 {
   struct Case { const char* file; std::size_t v, f; std::size_t polylines; };
