@@ -406,11 +406,11 @@ int main(int argc, char** argv)
           .key("area").value(h.second.second).end_object();
       j.end_array();
       j.key("timings_seconds").begin_object()
-        .key("read").value(t_read).key("curve_on_edges").value(t_cut)
+        .key("read").value(t_read).key("curve_on_edges").value(t_cut).key("mesh_tables").value(report.time_mesh)
         .key("jump_laplace").value(report.time_setup + report.time_jump_laplace)
         .key("hodge").value(report.time_hodge).key("residual").value(report.time_residual)
         .key("second_solve").value(report.time_second_solve).key("labels").value(report.time_labels)
-        .key("write").value(t_write).key("io").value(t_read + t_write)
+        .key("output_maps").value(report.time_output_maps).key("write").value(t_write).key("io").value(t_read + t_write)
         .key("total").value(seconds_since(t_start))
         .end_object();
       j.end_object();

@@ -278,6 +278,28 @@ TEST(Tool, DoubleTorusWithLoopsHasThreeLabelLevels)
   EXPECT_EQ(h.at(2), 582);
   EXPECT_NE(summary.find("\"interior_endpoints\": 14"), std::string::npos);
   EXPECT_NE(summary.find("\"reduced_residual\": true"), std::string::npos);
+  // the timings of the steps: every one present, none negative, and together not more than the total
+  // (they do not overlap)
+  {
+    const std::size_t at = summary.find("\"timings_seconds\"");
+    ASSERT_NE(at, std::string::npos);
+    auto seconds = [&](const std::string& key) {
+      const std::size_t k = summary.find("\"" + key + "\": ", at);
+      EXPECT_NE(k, std::string::npos) << key;
+      return k == std::string::npos ? -1. : std::stod(summary.substr(k + key.size() + 4));
+    };
+    double steps = 0;
+    for(const char* key : {"read", "curve_on_edges", "mesh_tables", "jump_laplace", "hodge", "residual", "second_solve",
+                           "labels", "output_maps", "write"})
+    {
+      const double t = seconds(key);
+      EXPECT_GE(t, 0.) << key;
+      steps += t;
+    }
+    EXPECT_GT(seconds("mesh_tables"), 0.);
+    EXPECT_NEAR(seconds("io"), seconds("read") + seconds("write"), 1e-9);
+    EXPECT_LE(steps, seconds("total") + 1e-6);
+  }
   // both factorizations on one thread: the same labels
   const std::map<int, int> hs =
     solve_demo("'" + demo + "DoubleTorusWithLoops.obj' --reduced-residual --sequential", "dtloops-seq");

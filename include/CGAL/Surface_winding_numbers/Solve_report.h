@@ -93,8 +93,13 @@ struct Solve_report
   /// @{
 
   /// seconds spent in each step (setup, jump Laplace, Hodge, residual, second solve, labels) and in total
+  /// (of these steps)
   double time_setup = 0, time_jump_laplace = 0, time_hodge = 0, time_residual = 0,
          time_second_solve = 0, time_labels = 0, time_total = 0;
+  /// seconds the solver's construction spent on the mesh (its flat tables, cotangent weights and Hodge
+  /// star; once per `Surface_winding_numbers_solver`, the same in each of its reports), and seconds
+  /// spent writing the output property maps of this solve; neither is part of `time_total`
+  double time_mesh = 0, time_output_maps = 0;
   /// @}
 };
 

@@ -181,8 +181,10 @@ public:
     Traits traits = choose_parameter<Traits>(get_parameter(np, CGAL::internal_np::geom_traits));
     try
     {
+      internal::Stopwatch clock;
       core_.reset(new internal::Winding_number_core<LA>(mesh_tables(vpm, traits)));
       core_->fill_mesh_report(report_);
+      report_.time_mesh = time_mesh_ = clock.lap();
     }
     catch(const Invalid_input& e)
     {
@@ -228,6 +230,7 @@ public:
     const std::string construction_error = report_.error;
     Solve_report rep;
     if(core_) core_->fill_mesh_report(rep);
+    rep.time_mesh = time_mesh_;
     try
     {
       if(!core_) throw Invalid_input(construction_error);   // the mesh was rejected by the constructor
@@ -252,7 +255,9 @@ public:
         auto& lp = get_parameter_reference(np, snp::lp_solver);
         r = core_->solve(chain, options, lp, rep);
       }
+      internal::Stopwatch clock;
       write_outputs(r, label_map, np);
+      rep.time_output_maps = clock.lap();
       rep.success = true;
     }
     catch(const Invalid_input& e)
@@ -386,6 +391,7 @@ private:
   FIM fim_;
   std::unique_ptr<internal::Winding_number_core<LA>> core_;
   Solve_report report_;
+  double time_mesh_ = 0;   // of the construction
 };
 
 } // namespace Surface_winding_numbers
