@@ -433,45 +433,6 @@ TEST(NestedDissection, OrdersAreFillReducingPermutations)
   }
 }
 
-TEST(JumpLaplace, DirectAssemblyEqualsTripletAssembly)
-{
-  // the jump Laplacian's compressed columns, written directly for CGAL::Eigen_sparse_matrix, against
-  // add_coef() (Eigen's triplets): the same entries, parallel edges summed, rows sorted per column
-  namespace SI = CGAL::Surface_winding_numbers::internal;
-  const std::size_t n = 300;
-  std::mt19937 rng(5);
-  std::uniform_int_distribution<std::size_t> node(0, n - 1);
-  std::uniform_real_distribution<double> weight(0.1, 2.);
-  std::vector<std::size_t> ei, ej;
-  std::vector<double> ew, diagonal(n);
-  for(std::size_t k = 0; k < 2000; ++k)
-  {
-    const std::size_t i = node(rng), j = node(rng);
-    if(i == j) continue;
-    ei.push_back(i); ej.push_back(j); ew.push_back(weight(rng));
-    if(k % 10 == 0) { ei.push_back(j); ej.push_back(i); ew.push_back(weight(rng)); }   // a parallel edge
-  }
-  for(double& d : diagonal) d = weight(rng) + 10;
-  CGAL::Eigen_sparse_matrix<double> direct(static_cast<int>(n)), triplets(static_cast<int>(n));
-  SI::assemble_symmetric(direct, n, ei, ej, ew, diagonal, 0);
-  SI::assemble_symmetric(triplets, n, ei, ej, ew, diagonal, 0L);
-  const auto& A = direct.eigen_object();
-  const auto& B = triplets.eigen_object();
-  ASSERT_TRUE(A.isCompressed());
-  ASSERT_EQ(A.nonZeros(), B.nonZeros());
-  for(Eigen::Index j = 0; j < A.outerSize(); ++j)
-  {
-    ASSERT_EQ(A.outerIndexPtr()[j], B.outerIndexPtr()[j]);
-    for(auto k = A.outerIndexPtr()[j]; k < A.outerIndexPtr()[j + 1]; ++k)
-    {
-      if(k > A.outerIndexPtr()[j]) ASSERT_LT(A.innerIndexPtr()[k - 1], A.innerIndexPtr()[k]);
-      ASSERT_EQ(A.innerIndexPtr()[k], B.innerIndexPtr()[k]);
-      ASSERT_NEAR(A.valuePtr()[k], B.valuePtr()[k], 1e-14);
-    }
-  }
-  EXPECT_LT(A.nonZeros(), Eigen::Index(n + 2 * ew.size()));   // the parallel edges were merged
-}
-
 TEST(JumpLaplace, ClosedLoopGivesTwoValuedFunctionAndExactJumps)
 {
   Mesh m;

@@ -7,7 +7,6 @@
 #include <CGAL/Surface_winding_numbers/internal/mesh_tables.h>
 
 #ifdef CGAL_EIGEN3_ENABLED
-#include <CGAL/Eigen_sparse_matrix.h>
 #include <Eigen/Core>
 #endif
 
@@ -15,7 +14,6 @@
 #include <limits>
 #include <memory>
 #include <numeric>
-#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -131,67 +129,6 @@ auto solve_columns(LA& la, const std::vector<double>& B, std::size_t n, std::siz
 }
 #endif
 
-// The symmetric matrix with off-diagonal entries -w at (i, j) and (j, i) for every edge (i, j, w)
-// with w != 0 (each pair given once) and `diagonal` on the diagonal, into `A` (n x n, both
-// triangles), by add_coef() for any sparse matrix type of the traits.
-template <class Matrix>
-void assemble_symmetric(Matrix& A, std::size_t n, const std::vector<std::size_t>& ei, const std::vector<std::size_t>& ej,
-                        const std::vector<double>& ew, const std::vector<double>& diagonal, long)
-{
-  for(std::size_t k = 0; k < ew.size(); ++k) { A.add_coef(ei[k], ej[k], -ew[k]); A.add_coef(ej[k], ei[k], -ew[k]); }
-  for(std::size_t k = 0; k < n; ++k) A.add_coef(k, k, diagonal[k]);
-}
-
-#ifdef CGAL_EIGEN3_ENABLED
-// The same for CGAL::Eigen_sparse_matrix: its compressed columns written directly (rows sorted in
-// each column, as CHOLMOD expects). add_coef() collects triplets that Eigen sorts into a row-major
-// matrix and then copies into a column-major one: 0.5 s of the 2.8 s first solve on 577k unknowns.
-inline void assemble_symmetric(CGAL::Eigen_sparse_matrix<double>& A, std::size_t n, const std::vector<std::size_t>& ei,
-                               const std::vector<std::size_t>& ej, const std::vector<double>& ew,
-                               const std::vector<double>& diagonal, int)
-{
-  typedef CGAL::Eigen_sparse_matrix<double>::EigenType Sparse;
-  typedef Sparse::StorageIndex Index;
-  Sparse S{Eigen::Index(n), Eigen::Index(n)};
-  std::vector<std::size_t> start(n + 1, 0);
-  for(std::size_t k = 0; k < ew.size(); ++k) { ++start[ei[k] + 1]; ++start[ej[k] + 1]; }
-  for(std::size_t j = 0; j < n; ++j) start[j + 1] += start[j] + 1;   // + the diagonal
-  S.resizeNonZeros(Eigen::Index(start[n]));
-  Index* outer = S.outerIndexPtr();
-  Index* inner = S.innerIndexPtr();
-  double* value = S.valuePtr();
-  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-  for(std::size_t j = 0; j < n; ++j) { inner[fill[j]] = Index(j); value[fill[j]++] = diagonal[j]; }
-  for(std::size_t k = 0; k < ew.size(); ++k)
-  {
-    inner[fill[ej[k]]] = Index(ei[k]); value[fill[ej[k]]++] = -ew[k];
-    inner[fill[ei[k]]] = Index(ej[k]); value[fill[ei[k]]++] = -ew[k];
-  }
-  // each column sorted by row (insertion sort: a vertex has few neighbours), entries of parallel
-  // edges summed, and the columns moved down over what the sums freed
-  std::size_t out = 0;
-  for(std::size_t j = 0; j < n; ++j)
-  {
-    for(std::size_t a = start[j] + 1; a < start[j + 1]; ++a)
-      for(std::size_t b = a; b > start[j] && inner[b - 1] > inner[b]; --b)
-      {
-        std::swap(inner[b - 1], inner[b]);
-        std::swap(value[b - 1], value[b]);
-      }
-    outer[j] = Index(out);
-    for(std::size_t a = start[j]; a < start[j + 1]; ++a)
-    {
-      if(out > std::size_t(outer[j]) && inner[out - 1] == inner[a]) { value[out - 1] += value[a]; continue; }
-      inner[out] = inner[a];
-      value[out++] = value[a];
-    }
-  }
-  outer[n] = Index(out);
-  S.resizeNonZeros(Eigen::Index(out));
-  A.eigen_object().swap(S);   // A has no coefficient yet: its (empty) assembly is a no-op
-}
-#endif
-
 // The jump Laplace system (paper Eqs. 6-8, 10) on V* = vertices minus interior endpoints. The
 // constant null space of every connected component of V* is removed exactly by pinning the
 // component's first vertex (u0 = 0 there), so the matrix is positive definite and b needs no
@@ -230,9 +167,7 @@ public:
     std::vector<double> edge_weight(m.ne, 0.), diagonal(n, 0.);
     for(std::size_t s = 0; s < 3 * m.nf; ++s)
       if(!excluded[m.tail(s)] && !excluded[m.head(s)]) edge_weight[m.fe[s]] += weight[s];
-    std::vector<std::size_t> ei, ej;   // the off-diagonal entries, once per edge
-    std::vector<double> ew;
-    ei.reserve(m.ne); ej.reserve(m.ne); ew.reserve(m.ne);
+    A_.reset(new Matrix(static_cast<int>(n), static_cast<int>(n)));
     for(std::size_t e = 0; e < m.ne; ++e)
     {
       const double w = edge_weight[e];
@@ -240,10 +175,9 @@ public:
       const std::size_t i = dof_[m.ev[2 * e]], j = dof_[m.ev[2 * e + 1]];
       if(i != npos) diagonal[i] += w;
       if(j != npos) diagonal[j] += w;
-      if(i != npos && j != npos) { ei.push_back(i); ej.push_back(j); ew.push_back(w); }
+      if(i != npos && j != npos) { A_->add_coef(i, j, -w); A_->add_coef(j, i, -w); }
     }
-    A_.reset(new Matrix(static_cast<int>(n), static_cast<int>(n)));
-    assemble_symmetric(*A_, n, ei, ej, ew, diagonal, 0);
+    for(std::size_t k = 0; k < n; ++k) A_->add_coef(k, k, diagonal[k]);
     double D = 1;
     if(!la_->factor(*A_, D)) throw Solver_failure("factorization of the jump Laplacian failed");
   }
