@@ -1187,9 +1187,10 @@ TEST(Solver, HarmonicBasisAndTwoFormLaplacianGiveTheSameAnswer)
 
 TEST(ConcurrentFactorizations, SameAnswerAsSequential)
 {
-  // broken meridian + broken contractible loop: the Hodge projection is needed, and its 2-form
-  // Laplacian is factorized on a second thread by default; the answer is the analytic one and the
-  // same as with both factorizations on this thread, also when the solver object is reused
+  // broken meridian + broken contractible loop: the Hodge projection is needed, and by default its
+  // harmonic basis is built on a second thread (the 0-form Laplacian's factorization there, the
+  // cohomology generators on this thread meanwhile); the answer is the analytic one and the same as
+  // with everything on this thread, also when the solver object is reused
   Mesh m;
   const int nu = 24, nv = 12;
   const auto chain = broken_meridian_and_loop(m, nu, nv);
@@ -1210,7 +1211,7 @@ TEST(ConcurrentFactorizations, SameAnswerAsSequential)
     if(std::isfinite(w1[h]) || std::isfinite(w2[h])) EXPECT_NEAR(w1[h], w2[h], 1e-9);
   EXPECT_NEAR(concurrent.lp_objective, sequential.lp_objective, 1e-9 * (1 + sequential.lp_objective));
 
-  // the solver class keeps the 2-form Laplacian factorized on the second thread for its next solve
+  // the solver class keeps the harmonic basis built on the second thread for its next solve
   SWN::Surface_winding_numbers_solver<Mesh> solver(m);
   auto l3 = m.add_property_map<Mesh::Face_index, int>("f:l3", 0).first;
   for(int k = 0; k < 2; ++k)

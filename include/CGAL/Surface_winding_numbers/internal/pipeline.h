@@ -138,15 +138,32 @@ public:
     const bool open_curve = rep.interior_endpoints > 0;   // the homology correction needs the Hodge projection
     // The Hodge projection does not depend on the curve: when it will be needed, the harmonic basis
     // (or the 2-form Laplacian) is computed on a second thread while this one solves for u. Its time
-    // counts in the Hodge step as far as it is waited for.
+    // counts in the Hodge step as far as it is waited for. For the basis, the second thread factorizes
+    // the 0-form Laplacian while this one finds the cohomology generators, which the basis needs only
+    // after that factorization (the second thread's work is the longer one); they count in the Hodge step.
     compute_vertex_order();   // read by both threads
     std::future<void> hodge_factorization;
+    double time_order = 0, time_generators = 0;   // counted in the jump Laplace step and the Hodge step
 #ifdef CGAL_HAS_THREADS
     if(options.concurrent_factorizations && rep.homology_correction && open_curve && !hodge_ready())
     {
       const std::size_t max_classes = options.harmonic_basis_max_classes;
-      try { hodge_factorization = std::async(std::launch::async, [this, max_classes] { prepare_hodge_projection(max_classes); }); }
+      const bool basis = expected_classes() <= max_classes;
+      std::promise<Cohomology_generators> generators;
+      std::shared_future<Cohomology_generators> pending = generators.get_future().share();
+      try
+      {
+        hodge_factorization =
+          std::async(std::launch::async, [this, max_classes, pending] { prepare_hodge_projection(max_classes, pending); });
+      }
       catch(const std::system_error&) {}   // no thread available: computed when needed
+      if(hodge_factorization.valid() && basis)
+      {
+        time_order = clock.lap();
+        try { generators.set_value(cohomology_generators(m_)); }
+        catch(...) { generators.set_exception(std::current_exception()); }   // the other thread rethrows it
+        time_generators = clock.lap();
+      }
     }
 #endif
     // u: jump Laplace solve (Eq. 10) with jumps Gamma. Without interior endpoints the jump Laplacian
@@ -159,7 +176,7 @@ public:
     Jump_laplace_system<LA>& L = *Lp;
     r.u = first_jump_laplace_solve(chain, endpoint, L);
     if(!open_curve) laplacian_ = options.keep_hodge_factorization ? Lp : nullptr;
-    rep.time_jump_laplace = clock.lap();
+    rep.time_jump_laplace = clock.lap() + time_order;
     if(verbose)
       std::cerr << "[swn] jump Laplace solve (" << L.size() << " unknowns"
                 << (rep.jump_laplacian_reused ? ", factorization kept from an earlier solve" : "") << "): "
@@ -187,7 +204,7 @@ public:
                                                  " harmonic 1-forms" : std::string("2-form Laplace solve")) << "\n";
       if(!options.keep_hodge_factorization) { basis_.release(); hodge_.release(); laplacian_.reset(); }
       rep.hodge_projection = open_curve;
-      rep.time_hodge = clock.lap();
+      rep.time_hodge = clock.lap() + time_generators;
       if(verbose) std::cerr << "[swn] Darboux derivative and harmonic part: " << rep.time_hodge << " s\n";
 
       // v: residual function (Eq. 11), or its reduced approximation (Sec. 6)
@@ -250,20 +267,22 @@ public:
   {
     std::vector<double> gamma = darboux_derivative(m_, u, endpoint);
     if(!open_curve) return gamma;
-    prepare_hodge_projection(max_classes);
+    prepare_hodge_projection(max_classes,
+                             std::async(std::launch::deferred, [this] { return cohomology_generators(m_); }).share());
     return basis_.assembled() ? basis_.harmonic_part(gamma) : hodge_.harmonic_part(gamma);
   }
 
   // The per-mesh part of the Hodge projection: the harmonic basis when the mesh has at most
   // `max_classes` cohomology classes, else the factorized 2-form Laplacian. Nothing if either is there.
   // The basis is built with the 0-form Laplacian, the one kept from a curve without interior endpoints
-  // if there is one. A new one is not kept: held through the residual step, its memory slowed that
-  // step down (the 380-case benchmark: residual +15 %, peak +15 %, 2026-12-03).
-  void prepare_hodge_projection(std::size_t max_classes)
+  // if there is one, and the cohomology `generators` (read once the 0-form Laplacian is factorized:
+  // they may still be computed by the other thread). A new 0-form Laplacian is not kept: held through
+  // the residual step, its memory slowed that step down (the 380-case benchmark: residual +15 %,
+  // peak +15 %, 2026-12-03).
+  void prepare_hodge_projection(std::size_t max_classes, std::shared_future<Cohomology_generators> generators)
   {
     if(hodge_ready()) return;
-    const Cohomology_generators gen = cohomology_generators(m_);
-    if(gen.complete && gen.size() <= max_classes)
+    if(expected_classes() <= max_classes)
     {
       std::shared_ptr<Jump_laplace_system<LA>> L0 = laplacian_;
       if(!L0)
@@ -272,9 +291,27 @@ public:
         L0 = std::make_shared<Jump_laplace_system<LA>>();
         L0->jump_laplacian(m_, weight_, std::vector<char>(m_.nv, 0), &vertex_order_);
       }
-      basis_.assemble(m_, star_, gen, *L0);
+      const Cohomology_generators& gen = generators.get();
+      if(gen.complete && gen.size() <= max_classes)
+      {
+        basis_.assemble(m_, star_, gen, *L0);
+        return;
+      }
     }
-    else hodge_.assemble(m_, star_);
+    hodge_.assemble(m_, star_);
+  }
+
+  // the number of cohomology classes of the mesh, from the Euler characteristics: 2g per closed
+  // component, 2g + b - 1 = 1 - chi per bordered one (what a complete tree-cotree finds)
+  std::size_t expected_classes() const
+  {
+    std::size_t K = 0;
+    for(std::size_t c = 0; c < m_.n_components; ++c)
+    {
+      const long k = (m_.component_border_edges[c] > 0 ? 1 : 2) - m_.component_euler_characteristic[c];
+      K += std::size_t((std::max)(k, 0L));
+    }
+    return K;
   }
   bool hodge_ready() const { return basis_.assembled() || hodge_.assembled(); }
 
