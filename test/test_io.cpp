@@ -87,6 +87,22 @@ std::array<std::size_t, 3> triple(const Mesh& m, FI f)
   return r;
 }
 
+// `mesh` as OBJ text with its faces shuffled and each rotated (random with `seed`); `faces` gets them
+// in the order written
+std::string shuffled_obj(const Mesh& mesh, unsigned seed, std::vector<std::array<std::size_t, 3> >& faces)
+{
+  faces.clear();
+  for(FI f : mesh.faces()) faces.push_back(triple(mesh, f));
+  std::mt19937 rng(seed);
+  std::shuffle(faces.begin(), faces.end(), rng);
+  for(auto& t : faces) std::rotate(t.begin(), t.begin() + (rng() % 3), t.end());
+  std::ostringstream os;
+  os.precision(17);
+  for(VI v : mesh.vertices()) os << "v " << mesh.point(v) << "\n";
+  for(auto& t : faces) os << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << "\n";
+  return os.str();
+}
+
 // boundary of a chain: arrivals minus departures
 std::vector<long long> chain_boundary(const Mesh& m, const std::vector<int>& chain)
 {
@@ -452,15 +468,7 @@ TEST(ReadMesh, ShuffledBunnyKeepsOrder)
   ASSERT_EQ(bunny.number_of_faces(), 28576u);
   // shuffle faces and rotate each face, write as OBJ, read back, compare
   std::vector<std::array<std::size_t, 3> > faces;
-  for(FI f : bunny.faces()) faces.push_back(triple(bunny, f));
-  std::mt19937 rng(7);
-  std::shuffle(faces.begin(), faces.end(), rng);
-  for(auto& t : faces) std::rotate(t.begin(), t.begin() + (rng() % 3), t.end());
-  std::ostringstream os;
-  os.precision(17);
-  for(VI v : bunny.vertices()) os << "v " << bunny.point(v) << "\n";
-  for(auto& t : faces) os << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << "\n";
-  std::istringstream is(os.str());
+  std::istringstream is(shuffled_obj(bunny, 7, faces));
   Mesh m;
   IO::read_mesh(is, "obj", "shuffled.obj", m);
   EXPECT_TRUE(m.is_valid(false));
@@ -476,27 +484,13 @@ TEST(ReadMesh, DirectWiringEqualsFaceByFaceInsertion)
   // every halfedge's target, next and face, every face's and every vertex's halfedge, borders included
   // (annulus: two border loops; the small OBJ: an unreferenced vertex; the bunny shuffled and rotated)
   std::vector<std::pair<std::string, std::string> > inputs;   // (name, OBJ text)
-  for(const char* file : {"annulus.obj", "bunny.obj", "torus.obj"})
-  {
-    std::ifstream in(demo + file);
-    std::ostringstream text;
-    text << in.rdbuf();
-    inputs.emplace_back(file, text.str());
-  }
+  for(const char* file : {"annulus.obj", "bunny.obj", "torus.obj"}) inputs.emplace_back(file, read_file(demo + file));
   inputs.emplace_back("small.obj", "v 0 0 0\nv 1 0 0\nv 9 9 9\nv 0 1 0\nv 1 1 0\nf 1 2 4\nf 2 5 4\n");
   {
     Mesh bunny;
     IO::read_mesh(demo + "bunny.obj", bunny);
     std::vector<std::array<std::size_t, 3> > faces;
-    for(FI f : bunny.faces()) faces.push_back(triple(bunny, f));
-    std::mt19937 rng(11);
-    std::shuffle(faces.begin(), faces.end(), rng);
-    for(auto& t : faces) std::rotate(t.begin(), t.begin() + (rng() % 3), t.end());
-    std::ostringstream os;
-    os.precision(17);
-    for(VI v : bunny.vertices()) os << "v " << bunny.point(v) << "\n";
-    for(auto& t : faces) os << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << "\n";
-    inputs.emplace_back("shuffled bunny", os.str());
+    inputs.emplace_back("shuffled bunny", shuffled_obj(bunny, 11, faces));
   }
   for(const auto& input : inputs)
   {

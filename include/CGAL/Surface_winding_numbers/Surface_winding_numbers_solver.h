@@ -184,7 +184,7 @@ public:
       internal::Stopwatch clock;
       core_.reset(new internal::Winding_number_core<LA>(mesh_tables(vpm, traits)));
       core_->fill_mesh_report(report_);
-      report_.time_mesh = time_mesh_ = clock.lap();
+      report_.time_mesh = clock.lap();
     }
     catch(const Invalid_input& e)
     {
@@ -230,7 +230,7 @@ public:
     const std::string construction_error = report_.error;
     Solve_report rep;
     if(core_) core_->fill_mesh_report(rep);
-    rep.time_mesh = time_mesh_;
+    rep.time_mesh = report_.time_mesh;   // every report carries the construction's time
     try
     {
       if(!core_) throw Invalid_input(construction_error);   // the mesh was rejected by the constructor
@@ -391,7 +391,6 @@ private:
   FIM fim_;
   std::unique_ptr<internal::Winding_number_core<LA>> core_;
   Solve_report report_;
-  double time_mesh_ = 0;   // of the construction
 };
 
 } // namespace Surface_winding_numbers

@@ -918,14 +918,13 @@ inline std::string edge_name(std::size_t a, std::size_t b)
   return "(" + std::to_string(a) + ", " + std::to_string(b) + ")";
 }
 
-/// Validates a triangle soup: index range, repeated vertices, non-empty, oriented 2-manifold. Fills the
-/// statistics of `info`. Throws `Input_error` on the first problem, scanning faces in order.
-// validates the soup (indices, repeated vertices, manifold and consistently oriented edges, single fans
-// at the vertices) and fills `info`; `twin[3 f + k]` gets the corner whose halfedge runs along the
-// halfedge of corner k of face f (from vertex k to vertex k + 1) the other way, or `no_twin` on a
-// border, for triangle_soup_to_mesh()
+// a corner without twin: its halfedge is on the border (check_triangle_soup())
 constexpr std::uint32_t no_twin = (std::numeric_limits<std::uint32_t>::max)();
 
+/// Validates a triangle soup: index range, repeated vertices, non-empty, oriented 2-manifold. Fills the
+/// statistics of `info`. Throws `Input_error` on the first problem, scanning faces in order.
+/// `twin[3 f + k]` gets the corner whose halfedge runs along that of corner k of face f (from its vertex
+/// k to vertex k + 1) the other way, or `no_twin` on a border (for triangle_soup_to_mesh()).
 inline void check_triangle_soup(const Triangle_soup& soup, const std::string& file, Mesh_read_info& info,
                                 std::vector<std::uint32_t>& twin)
 {
@@ -995,11 +994,11 @@ inline void check_triangle_soup(const Triangle_soup& soup, const std::string& fi
                                               "(or not orientable)");
       if(opp1 != nf)
       {
+        const std::size_t at_b = local(opp1, b);   // opp1's corner at b, whose halfedge runs b -> a
         uf.unite(3 * f + k, local(opp1, a));
-        uf.unite(3 * f + (k + 1) % 3, local(opp1, b));
-        // the corner of opp1 at b starts its halfedge b -> a
-        twin[3 * f + k] = std::uint32_t(local(opp1, b));
-        twin[local(opp1, b)] = std::uint32_t(3 * f + k);
+        uf.unite(3 * f + (k + 1) % 3, at_b);
+        twin[3 * f + k] = std::uint32_t(at_b);
+        twin[at_b] = std::uint32_t(3 * f + k);
       }
     }
   }
