@@ -271,26 +271,24 @@ public:
     star_ = &star;
     const std::size_t K = gen.size();
     zeta_.assign(K, {});
-    std::vector<std::vector<double>> b(K, std::vector<double>(m.nv, 0.));
-    for(std::size_t k = 0; k < K; ++k)
-    {
-      zeta_[k] = gen.closed_form(m, k);
-      for(const auto& z : zeta_[k]) add_codifferential(m, z.first, star[z.first] * z.second, b[k]);
-    }
-    phi_ = L0.solve_vertex_laplace(b);
+    for(std::size_t k = 0; k < K; ++k) zeta_[k] = gen.closed_form(m, k);
+    phi_ = L0.solve_vertex_laplace(K, [&](std::size_t k, std::vector<double>& b) {
+      for(const auto& z : zeta_[k]) add_codifferential(m, z.first, star[z.first] * z.second, b);
+    });
     // Gram matrix: <h_j, h_k> = <zeta_j, h_k> because h_k is S1-orthogonal to the exact forms
     gram_.assign(K * K, 0.);
     std::vector<double> zk(m.ne, 0.);
     for(std::size_t k = 0; k < K; ++k)
     {
       for(const auto& z : zeta_[k]) zk[z.first] = z.second;
+      const double* phik = phi_.data() + k * m.nv;
       for(std::size_t j = 0; j < K; ++j)
       {
         double sum = 0;
         for(const auto& z : zeta_[j])
         {
           const std::size_t e = z.first;
-          sum += star[e] * z.second * (zk[e] - (phi_[k][m.ev[2 * e + 1]] - phi_[k][m.ev[2 * e]]));
+          sum += star[e] * z.second * (zk[e] - (phik[m.ev[2 * e + 1]] - phik[m.ev[2 * e]]));
         }
         gram_[j * K + k] = sum;
       }
@@ -331,7 +329,8 @@ public:
     {
       double r = 0;
       for(const auto& z : zeta_[j]) r += star[z.first] * z.second * omega[z.first];
-      for(std::size_t v = 0; v < m.nv; ++v) r -= phi_[j][v] * div[v];
+      const double* phij = phi_.data() + j * m.nv;
+      for(std::size_t v = 0; v < m.nv; ++v) r -= phij[v] * div[v];
       c[j] = r;
     }
     for(std::size_t j = 0; j < K; ++j)   // forward and back substitution with the Cholesky factor
@@ -344,10 +343,13 @@ public:
       for(std::size_t i = j + 1; i < K; ++i) c[j] -= gram_[i * K + j] * c[i];
       c[j] /= gram_[j * K + j];
     }
-    std::vector<double> phi(m.nv, 0.), gamma(m.ne, 0.);
+    std::vector<double> psi(m.nv, 0.), gamma(m.ne, 0.);   // sum_k c_k phi_k
     for(std::size_t k = 0; k < K; ++k)
-      for(std::size_t v = 0; v < m.nv; ++v) phi[v] += c[k] * phi_[k][v];
-    for(std::size_t e = 0; e < m.ne; ++e) gamma[e] = phi[m.ev[2 * e]] - phi[m.ev[2 * e + 1]];
+    {
+      const double* phik = phi_.data() + k * m.nv;
+      for(std::size_t v = 0; v < m.nv; ++v) psi[v] += c[k] * phik[v];
+    }
+    for(std::size_t e = 0; e < m.ne; ++e) gamma[e] = psi[m.ev[2 * e]] - psi[m.ev[2 * e + 1]];
     for(std::size_t k = 0; k < K; ++k)
       for(const auto& z : zeta_[k]) gamma[z.first] += c[k] * z.second;
     return gamma;
@@ -360,7 +362,7 @@ public:
   {
     m_ = nullptr;
     std::vector<std::vector<std::pair<std::size_t, double>>>().swap(zeta_);
-    std::vector<std::vector<double>>().swap(phi_);
+    std::vector<double>().swap(phi_);
     std::vector<double>().swap(gram_);
   }
 
@@ -376,7 +378,7 @@ private:
   const Mesh_tables* m_ = nullptr;
   const std::vector<double>* star_ = nullptr;
   std::vector<std::vector<std::pair<std::size_t, double>>> zeta_;   // per class, sparse
-  std::vector<std::vector<double>> phi_;                            // per class, per vertex
+  std::vector<double> phi_;                                         // per class, per vertex (nv x K)
   std::vector<double> gram_;                                        // K x K, Cholesky factor (lower)
 };
 
