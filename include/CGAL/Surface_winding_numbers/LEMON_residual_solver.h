@@ -242,12 +242,13 @@ public:
   std::size_t descent_steps() const { return descent_steps_; }
   /*!
   work budget of the push-relabel maximum flow in the certificate of `MULTILEVEL`, in arc scans per
-  node and arc of the level (default 200), capped at \f$ 2 \cdot 10^8 \f$ scans in all but never
-  below 60 per node and arc (on levels of more than a million nodes and arcs, the certificates that
-  push-relabel finds hard cost it more than they cost Boykov-Kolmogorov). Push-relabel is the faster
-  algorithm on most certificates; beyond the budget, Boykov-Kolmogorov finishes the flow from where
-  push-relabel stopped (`statistics().max_flow_fallbacks`). 0: Boykov-Kolmogorov only; a negative
-  value: no budget. Changes the running time, never the answer.
+  node and arc of the level (default 200). Push-relabel is the faster algorithm on most
+  certificates; beyond the budget, Boykov-Kolmogorov finishes the flow from where push-relabel
+  stopped (`statistics().max_flow_fallbacks`). 0: Boykov-Kolmogorov only; a negative value: no
+  budget. Changes the running time, never the answer. (Until 2026-12-03 the budget was capped at
+  \f$ 2 \cdot 10^8 \f$ scans on levels of more than a million nodes and arcs; since push-relabel
+  uses the gap heuristic, the first certificate of such a level costs it less than the cap's
+  hand-over to Boykov-Kolmogorov, see `benchmark/residual_solvers.md`.)
   */
   void set_max_flow_budget(double work_per_element) { push_relabel_budget_ = work_per_element; }
   /// the work budget of the push-relabel maximum flow (see `set_max_flow_budget()`)
@@ -1291,14 +1292,10 @@ private:
     return outcome;
   }
 
-  // the work budget of push-relabel on a level, in arc scans: set_max_flow_budget() per element,
-  // capped at 2e8 scans in all on large levels (but never below 60 per element): there
-  // push-relabel's hard certificates cost more than Boykov-Kolmogorov's
+  // the work budget of push-relabel on a level, in arc scans: set_max_flow_budget() per element
   std::size_t push_relabel_work_limit(const Level& lv) const
   {
-    const double elements = double(lv.n + 2 * lv.arcs.size());
-    const double budget = (std::max)((std::min)(push_relabel_budget_ * elements, 2e8),
-                                     (std::min)(push_relabel_budget_, 60.) * elements);
+    const double budget = push_relabel_budget_ * double(lv.n + 2 * lv.arcs.size());
     return push_relabel_budget_ < 0 || budget >= 1e18 ? (std::numeric_limits<std::size_t>::max)() : std::size_t(budget);
   }
 
