@@ -330,7 +330,7 @@ TEST(LemonResidual, NameAndDefaults)
   EXPECT_EQ(p.max_flow_budget(), -1.);
   EXPECT_EQ(l.descent_steps(), 1000u);
   EXPECT_EQ(l.finest_band_radius(), 8);
-  EXPECT_EQ(l.band_radius(), 4);
+  EXPECT_EQ(l.band_radius(), 3);
   EXPECT_EQ(l.coarsest_nodes(), 2000u);
   EXPECT_EQ(l.cluster_size(), 16u);
   p.set_descent_steps(0);

@@ -204,7 +204,7 @@ public:
   void set_verbose(bool b) { verbose_ = b; }
   /*!
   parameters of `MULTILEVEL`: the hierarchy stops at `coarsest_nodes` nodes (default 2000), clusters
-  have at most `cluster_size` nodes (default 16), bands reach `band_radius` arcs (default 4) beyond
+  have at most `cluster_size` nodes (default 16), bands reach `band_radius` arcs (default 3) beyond
   the jumps on the coarse levels and around the barriers of refused certificates (see
   `set_finest_band_radius()` for the first band of the finest level), and at most
   `max_refinements` bands (default 16) are re-solved on the finest level before the whole problem
@@ -1808,7 +1808,7 @@ private:
 
   Algorithm algorithm_;
   std::size_t coarsest_nodes_ = 2000, cluster_size_ = 16, max_refinements_ = 16;
-  int band_radius_ = 4;
+  int band_radius_ = 3;
   double push_relabel_budget_ = 200;
   bool concurrent_max_flows_ = true;
   std::size_t concurrent_max_flow_nodes_ = 500000;
