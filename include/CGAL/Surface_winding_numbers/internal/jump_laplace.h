@@ -135,9 +135,10 @@ auto solve_columns(LA& la, const std::vector<double>& B, std::size_t n, std::siz
 // once for all its columns, but each column's right side and solution are arrays of the system's size,
 // and on the virtual machines of the benchmark every first touch of a 4 KiB page costs about 10
 // microseconds (benchmark/RESULTS.md, Speed): 22 columns at once on 11,800 vertices touched 3,200
-// new pages in the Hodge step of a whole solve (0.043 s for the solve, 0.020 s in blocks of two).
-// Measured alone with CHOLMOD, in blocks of 8 the columns cost 1.0-1.4 times as much as all at once
-// (1, 2, 4 columns: up to 3.5 times), with four times less new memory than 22 at once.
+// new pages in the Hodge step of a whole solve (0.043 s for the solve), in blocks of 8 1,100 (0.027-
+// 0.030 s), in blocks of two 400 (0.020 s). But measured alone with CHOLMOD, in blocks of 8 the
+// columns cost 1.0-1.4 times as much as all at once, in blocks of 1, 2 or 4 up to 3.5 times (47k and
+// 94k vertices), which larger meshes feel more than the page faults.
 constexpr std::size_t vertex_laplace_block = 8;
 
 // The jump Laplace system (paper Eqs. 6-8, 10) on V* = vertices minus interior endpoints. The
