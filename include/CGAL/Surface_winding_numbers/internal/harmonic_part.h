@@ -247,7 +247,7 @@ inline Cohomology_generators cohomology_generators(const Mesh_tables& m)
     }
   gen.complete = queue.size() == m.nf;
   for(std::size_t c = 0; c < m.n_components; ++c)
-    if(classes[c] != (m.component_border_edges[c] > 0 ? 1 : 2) - m.component_euler_characteristic[c])
+    if(classes[c] != m.component_cohomology_classes(c))
       gen.complete = false;
   return gen;
 }

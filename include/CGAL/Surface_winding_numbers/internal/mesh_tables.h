@@ -122,6 +122,12 @@ struct Mesh_tables
     const long chi = component_euler_characteristic[c];
     return (chi == 1 && component_border_edges[c] > 0) || (chi == 2 && component_border_edges[c] == 0);
   }
+  // The dimension of the first cohomology of component c, from its Euler characteristic: 2g for a
+  // closed component, 2g + b - 1 = 1 - chi for one with b border loops.
+  long component_cohomology_classes(std::size_t c) const
+  {
+    return (component_border_edges[c] > 0 ? 1 : 2) - component_euler_characteristic[c];
+  }
   bool all_components_disks_or_spheres() const
   {
     for(std::size_t c = 0; c < n_components; ++c)

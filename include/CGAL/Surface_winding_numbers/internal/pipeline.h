@@ -301,16 +301,12 @@ public:
     hodge_.assemble(m_, star_);
   }
 
-  // the number of cohomology classes of the mesh, from the Euler characteristics: 2g per closed
-  // component, 2g + b - 1 = 1 - chi per bordered one (what a complete tree-cotree finds)
+  // the number of cohomology classes of the mesh, from the Euler characteristics (what a complete
+  // tree-cotree finds)
   std::size_t expected_classes() const
   {
     std::size_t K = 0;
-    for(std::size_t c = 0; c < m_.n_components; ++c)
-    {
-      const long k = (m_.component_border_edges[c] > 0 ? 1 : 2) - m_.component_euler_characteristic[c];
-      K += std::size_t((std::max)(k, 0L));
-    }
+    for(std::size_t c = 0; c < m_.n_components; ++c) K += std::size_t((std::max)(m_.component_cohomology_classes(c), 0L));
     return K;
   }
   bool hodge_ready() const { return basis_.assembled() || hodge_.assembled(); }
