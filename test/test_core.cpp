@@ -12,11 +12,14 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
+#include <functional>
 #include <cmath>
 #include <limits>
 #include <string>
 #include <map>
 #include <random>
+#include <thread>
 #include <vector>
 
 namespace {
@@ -653,6 +656,80 @@ TEST(HarmonicPart, ManyColumnSolveAgreesWithColumnByColumn)
       }
     for(std::size_t v = 0; v < t.nv; ++v) EXPECT_NEAR(Lx[v], b[v], 1e-9) << "column " << j << ", vertex " << v;
   }
+}
+
+TEST(HarmonicPart, ManyColumnSolveSharedWithAHelperThreadGivesTheSameColumns)
+{
+  // the Hodge step's many-column solve, its blocks shared with a thread that calls help() (as the
+  // solving thread does once it has solved for u), against the same solve alone: the same blocks
+  // go through the same solves, so the columns agree exactly whichever thread solved them
+  Mesh m;
+  torus_mesh(m, 24, 13);
+  SWN::Surface_winding_numbers_solver<Mesh> s(m);
+  const SI::Mesh_tables& t = s.tables();
+  std::vector<double> w;
+  SI::cotan_weights(t, w);
+  SI::Jump_laplace_system<LA> A;
+  A.jump_laplacian(t, w, std::vector<char>(t.nv, 0));
+  const std::size_t k = 4 * SI::vertex_laplace_block + 5;
+  const auto rhs = [&](std::size_t j, std::vector<double>& b) {
+    b[(13 * j + 3) % t.nv] += 1;
+    b[(29 * j + 70) % t.nv] -= 1;
+  };
+  const std::vector<double> alone = A.solve_vertex_laplace(k, rhs);
+  for(int helper_first = 0; helper_first < 2; ++helper_first)
+  {
+    SI::Shared_work share;
+    std::vector<double> shared;
+    std::thread helper;
+    if(helper_first) helper = std::thread([&] { share.help(); });   // waits for the work to be published
+    std::thread owner([&] {
+      shared = A.solve_vertex_laplace(k, rhs, &share);
+      share.finish();
+    });
+    if(!helper_first) helper = std::thread([&] { share.help(); });
+    owner.join();
+    helper.join();
+    ASSERT_EQ(shared.size(), alone.size());
+    for(std::size_t i = 0; i < alone.size(); ++i) ASSERT_EQ(shared[i], alone[i]) << "entry " << i;
+  }
+}
+
+TEST(HarmonicPart, SharedWorkIsDoneOnceAndHelpersNeverWaitForever)
+{
+  // every piece done once, and all of them when run() returns (the owner then reads the results),
+  // whether the helper joins before the work is published or after; a helper that comes after
+  // finish() returns at once
+  for(int helper_first = 0; helper_first < 2; ++helper_first)
+  {
+    SI::Shared_work share;
+    const std::size_t pieces = 2000;
+    std::vector<int> done(pieces, 0);
+    std::atomic<std::size_t> next(0);
+    const std::function<void()> work = [&] {
+      for(std::size_t p; (p = next.fetch_add(1)) < pieces;) ++done[p];
+    };
+    std::thread helper;
+    if(helper_first) helper = std::thread([&] { share.help(); });
+    std::size_t done_at_return = 0;
+    std::thread owner([&] {
+      share.run(work);
+      done_at_return = std::size_t(std::count(done.begin(), done.end(), 1));
+      share.finish();
+    });
+    if(!helper_first) helper = std::thread([&] { share.help(); });
+    owner.join();
+    helper.join();
+    EXPECT_EQ(done_at_return, pieces);
+    for(std::size_t p = 0; p < pieces; ++p) ASSERT_EQ(done[p], 1) << "piece " << p;
+  }
+  SI::Shared_work finished;
+  finished.finish();
+  finished.help();   // returns: nothing will be published
+  SI::Shared_work never_published;
+  std::thread owner([&] { never_published.finish(); });   // as the Hodge thread does when it needs no basis
+  never_published.help();
+  owner.join();
 }
 
 TEST(HarmonicPart, HarmonicBasisAndTwoFormLaplacianGiveTheSameGamma)

@@ -103,6 +103,52 @@ public:
     this->factorize(A);
     return *this;
   }
+
+  // The result and the workspace of many-column solves, reused from one solve to the next (the
+  // CHOLMOD solve behind Eigen's solve() allocates them anew every time, and on the virtual machines
+  // of the benchmark first touches of memory cost more than the solve: benchmark/RESULTS.md, Speed).
+  // It has its own cholmod_common, so that threads with a workspace each may solve at once with the
+  // same factorization (CHOLMOD only reads the factor in a solve).
+  class Solve_workspace
+  {
+  public:
+    Solve_workspace() { cholmod_start(&common_); }
+    ~Solve_workspace()
+    {
+      for(cholmod_dense** d : {&X_, &Y_, &E_}) if(*d) cholmod_free_dense(d, &common_);
+      cholmod_finish(&common_);
+    }
+    Solve_workspace(const Solve_workspace&) = delete;
+    Solve_workspace& operator=(const Solve_workspace&) = delete;
+
+  private:
+    friend class Cholmod_supernodal_in_given_order;
+    cholmod_common common_;
+    cholmod_dense *X_ = nullptr, *Y_ = nullptr, *E_ = nullptr;
+  };
+
+  // A^-1 B for the k columns of B (n x k, column-major): a pointer to the n x k solution, held by `ws`
+  // until its next solve; nullptr if the solve failed. May be called by several threads at once with
+  // different workspaces.
+  const double* solve_with_workspace(const double* B, std::size_t n, std::size_t k, Solve_workspace& ws) const
+  {
+    if(!this->m_factorizationIsOk || this->info() != Eigen::Success || this->m_cholmodFactor == nullptr ||
+       std::size_t(this->m_cholmodFactor->n) != n)
+      return nullptr;
+    cholmod_dense b;
+    b.nrow = n;
+    b.ncol = k;
+    b.nzmax = n * k;
+    b.d = n;
+    b.x = const_cast<double*>(B);   // read only
+    b.z = nullptr;
+    b.xtype = CHOLMOD_REAL;
+    b.dtype = CHOLMOD_DOUBLE;
+    if(!cholmod_solve2(CHOLMOD_A, this->m_cholmodFactor, &b, nullptr, &ws.X_, nullptr, &ws.Y_, &ws.E_, &ws.common_) ||
+       ws.common_.status < CHOLMOD_OK)
+      return nullptr;
+    return static_cast<const double*>(ws.X_->x);
+  }
 };
 // (nested_dissection_unknowns: below it AMD's fill is smaller than that of the geometric nested
 // dissection (a 60 x 60 grid: 71k against 101k entries; the dual graph of a 30k-face scan: 1.3M

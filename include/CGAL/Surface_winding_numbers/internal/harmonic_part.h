@@ -263,9 +263,10 @@ class Harmonic_basis
 public:
   // assembled() becomes true only after success. L0: the factorized 0-form Laplacian, a
   // Jump_laplace_system with no vertex excluded (the jump Laplacian of a curve without interior
-  // endpoints), whose edge weights are S1 = `star`.
+  // endpoints), whose edge weights are S1 = `star`. `share`: the solves of phi may be shared with a
+  // thread that waits for the basis (Jump_laplace_system::solve_vertex_laplace()).
   void assemble(const Mesh_tables& m, const std::vector<double>& star, const Cohomology_generators& gen,
-                const Jump_laplace_system<LA>& L0)
+                const Jump_laplace_system<LA>& L0, Shared_work* share = nullptr)
   {
     m_ = nullptr;
     star_ = &star;
@@ -274,7 +275,7 @@ public:
     for(std::size_t k = 0; k < K; ++k) zeta_[k] = gen.closed_form(m, k);
     phi_ = L0.solve_vertex_laplace(K, [&](std::size_t k, std::vector<double>& b) {
       for(const auto& z : zeta_[k]) add_codifferential(m, z.first, star[z.first] * z.second, b);
-    });
+    }, share);
     // Gram matrix: <h_j, h_k> = <zeta_j, h_k> because h_k is S1-orthogonal to the exact forms
     gram_.assign(K * K, 0.);
     std::vector<double> zk(m.ne, 0.);

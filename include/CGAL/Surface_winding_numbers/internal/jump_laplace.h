@@ -11,10 +11,17 @@
 #endif
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <condition_variable>
+#include <exception>
+#include <functional>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <numeric>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -131,6 +138,97 @@ auto solve_columns(LA& la, const std::vector<double>& B, std::size_t n, std::siz
 }
 #endif
 
+// The many-column solves of solve_vertex_laplace(): with a solver that offers them (the package's
+// CHOLMOD class), into a result and workspace kept from block to block; otherwise solve_columns().
+template <class LA, class = void>
+struct Has_workspace_solve : std::false_type {};
+template <class LA>
+struct Has_workspace_solve<LA, std::void_t<typename std::remove_reference_t<decltype(std::declval<LA&>().solver())>::Solve_workspace>>
+  : std::true_type {};
+
+template <class LA, bool = Has_workspace_solve<LA>::value>
+class Column_solver
+{
+public:
+  // X = A^-1 B for the k columns of B (n x k): a pointer to X, valid until the next call; nullptr on failure
+  const double* solve(LA& la, const std::vector<double>& B, std::size_t n, std::size_t k)
+  {
+    return solve_columns(la, B, n, k, X_, 0) ? X_.data() : nullptr;
+  }
+
+private:
+  std::vector<double> X_;
+};
+
+template <class LA>
+class Column_solver<LA, true>
+{
+public:
+  const double* solve(LA& la, const std::vector<double>& B, std::size_t n, std::size_t k)
+  {
+    return la.solver().solve_with_workspace(B.data(), n, k, ws_);
+  }
+
+private:
+  typename std::remove_reference_t<decltype(std::declval<LA&>().solver())>::Solve_workspace ws_;
+};
+
+// Work that a thread (the owner) shares with one that would otherwise wait for it (a helper): the
+// owner publishes a function that claims and does pieces of the work until none is left, does it
+// itself, and returns once every helper that joined is done; a helper joins if the work is published
+// before the owner says it has finished everything it could share. Used by the Hodge step's
+// many-column solve: the solving thread waits for the harmonic basis once it has solved for u.
+class Shared_work
+{
+public:
+  // owner: publishes `work`, does it, waits for the helpers; `work` must not throw
+  void run(const std::function<void()>& work)
+  {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      work_ = &work;
+    }
+    changed_.notify_all();
+    work();
+    std::unique_lock<std::mutex> lock(mutex_);
+    work_ = nullptr;
+    changed_.wait(lock, [this] { return helpers_ == 0; });
+  }
+
+  // owner: nothing (more) will be published
+  void finish()
+  {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      finished_ = true;
+    }
+    changed_.notify_all();
+  }
+
+  // helper: waits until work is published or finish() is called; does the work if it is published
+  void help()
+  {
+    std::unique_lock<std::mutex> lock(mutex_);
+    changed_.wait(lock, [this] { return work_ != nullptr || finished_; });
+    if(work_ == nullptr) return;
+    const std::function<void()>& work = *work_;
+    ++helpers_;
+    lock.unlock();
+    work();
+    lock.lock();
+    --helpers_;
+    lock.unlock();
+    changed_.notify_all();
+  }
+
+private:
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  const std::function<void()>* work_ = nullptr;
+  std::size_t helpers_ = 0;
+  bool finished_ = false;
+};
+
 // Right-hand sides per solve of solve_vertex_laplace(). A many-column solve reads the factorization
 // once for all its columns, but each column's right side and solution are arrays of the system's size,
 // and on the virtual machines of the benchmark every first touch of a 4 KiB page costs about 10
@@ -238,41 +336,41 @@ public:
   // Solves L x_j = b_j for k right-hand sides given per vertex: rhs(j, b) adds b_j to b, a vector of
   // nv zeros; entries at pinned and excluded vertices are not used. Returns the x_j per vertex, one
   // after the other (nv x k, column-major), 0 at pinned and excluded vertices. The columns are solved
-  // vertex_laplace_block at a time, in arrays reused from one block to the next. With no excluded
-  // vertex, L is the 0-form Laplacian d0^T S1 d0 of the Hodge decomposition (its edge weights are the
-  // Hodge star S1).
+  // vertex_laplace_block at a time, in arrays reused from one block to the next. With `share`, and a
+  // solver that allows two solves at once (Has_workspace_solve), the blocks are shared with a thread
+  // that calls share->help() (rhs is then called from both threads). With no excluded vertex, L is
+  // the 0-form Laplacian d0^T S1 d0 of the Hodge decomposition (its edge weights are the Hodge star S1).
   template <class Rhs>
-  std::vector<double> solve_vertex_laplace(std::size_t k, const Rhs& rhs) const
+  std::vector<double> solve_vertex_laplace(std::size_t k, const Rhs& rhs, Shared_work* share = nullptr) const
   {
     const Mesh_tables& m = *m_;
     std::vector<double> x(m.nv * k, 0.);
     if(n_ == 0 || k == 0) return x;
-    std::vector<double> b(m.nv, 0.), B, X;
-    for(std::size_t j0 = 0; j0 < k; j0 += vertex_laplace_block)
-    {
-      const std::size_t kb = (std::min)(vertex_laplace_block, k - j0);
-      B.resize(n_ * kb);
-      for(std::size_t j = 0; j < kb; ++j)
+    const std::size_t blocks = (k + vertex_laplace_block - 1) / vertex_laplace_block;
+    std::atomic<std::size_t> next(0);
+    std::mutex failure_mutex;
+    std::exception_ptr failure;
+    // claims blocks until none is left; the right sides and the result in arrays of this thread
+    const std::function<void()> work = [&] {
+      try
       {
-        rhs(j0 + j, b);
-        for(std::size_t v = 0; v < m.nv; ++v)
-        {
-          if(dof_[v] != npos) B[j * n_ + dof_[v]] = b[v];
-          b[v] = 0;
-        }
+        std::vector<double> b(m.nv, 0.), B;
+        Column_solver<LA> solver;
+        for(std::size_t block; (block = next.fetch_add(1)) < blocks;)
+          solve_vertex_laplace_block(block * vertex_laplace_block, (std::min)(vertex_laplace_block, k - block * vertex_laplace_block),
+                                     rhs, b, B, solver, x);
       }
-      if(!solve_columns(*la_, B, n_, kb, X, 0)) throw Solver_failure("0-form Laplace solve failed");
-      for(std::size_t j = 0; j < kb; ++j)
+      catch(...)
       {
-        double* xj = x.data() + (j0 + j) * m.nv;
-        for(std::size_t v = 0; v < m.nv; ++v)
-          if(dof_[v] != npos)
-          {
-            xj[v] = X[j * n_ + dof_[v]];
-            if(!std::isfinite(xj[v])) throw Solver_failure("0-form Laplace solve produced non-finite values");
-          }
+        next.store(blocks);   // the others stop after their block
+        std::lock_guard<std::mutex> lock(failure_mutex);
+        if(!failure) failure = std::current_exception();
       }
-    }
+    };
+    // two threads solve at once only with a solver known to allow it
+    if(share != nullptr && Has_workspace_solve<LA>::value && blocks > 1) share->run(work);
+    else work();
+    if(failure) std::rethrow_exception(failure);
     return x;
   }
 
@@ -282,6 +380,36 @@ public:
   bool excludes(const std::vector<char>& excluded) const { return la_ != nullptr && excluded_ == excluded; }
 
 private:
+  // columns j0 .. j0 + kb - 1 of solve_vertex_laplace() into x; b: nv zeros (kept so), B: scratch
+  template <class Rhs>
+  void solve_vertex_laplace_block(std::size_t j0, std::size_t kb, const Rhs& rhs, std::vector<double>& b,
+                                  std::vector<double>& B, Column_solver<LA>& solver, std::vector<double>& x) const
+  {
+    const Mesh_tables& m = *m_;
+    B.resize(n_ * kb);
+    for(std::size_t j = 0; j < kb; ++j)
+    {
+      rhs(j0 + j, b);
+      for(std::size_t v = 0; v < m.nv; ++v)
+      {
+        if(dof_[v] != npos) B[j * n_ + dof_[v]] = b[v];
+        b[v] = 0;
+      }
+    }
+    const double* X = solver.solve(*la_, B, n_, kb);
+    if(X == nullptr) throw Solver_failure("0-form Laplace solve failed");
+    for(std::size_t j = 0; j < kb; ++j)
+    {
+      double* xj = x.data() + (j0 + j) * m.nv;
+      for(std::size_t v = 0; v < m.nv; ++v)
+        if(dof_[v] != npos)
+        {
+          xj[v] = X[j * n_ + dof_[v]];
+          if(!std::isfinite(xj[v])) throw Solver_failure("0-form Laplace solve produced non-finite values");
+        }
+    }
+  }
+
   const Mesh_tables* m_ = nullptr;
   const std::vector<double>* weight_ = nullptr;
   std::vector<char> excluded_;

@@ -141,7 +141,9 @@ public:
     // counts in the Hodge step as far as it is waited for. For the basis, the second thread factorizes
     // the 0-form Laplacian while this one finds the cohomology generators, which the basis needs only
     // after that factorization (the second thread's work is the longer one); they count in the Hodge step.
+    // Once this thread has solved for u, it takes its share of the basis's many-column solve.
     compute_vertex_order();   // read by both threads
+    Shared_work basis_solves;   // outlives the second thread (the future below joins it first)
     std::future<void> hodge_factorization;
     double time_order = 0, time_generators = 0;   // counted in the jump Laplace step and the Hodge step
 #ifdef CGAL_HAS_THREADS
@@ -153,8 +155,14 @@ public:
       std::shared_future<Cohomology_generators> pending = generators.get_future().share();
       try
       {
-        hodge_factorization =
-          std::async(std::launch::async, [this, max_classes, pending] { prepare_hodge_projection(max_classes, pending); });
+        hodge_factorization = std::async(std::launch::async, [this, max_classes, pending, &basis_solves] {
+          struct Finish   // whatever happens, this thread stops waiting for shared work
+          {
+            Shared_work& work;
+            ~Finish() { work.finish(); }
+          } finish{basis_solves};
+          prepare_hodge_projection(max_classes, pending, &basis_solves);
+        });
       }
       catch(const std::system_error&) {}   // no thread available: computed when needed
       if(hodge_factorization.valid() && basis)
@@ -197,7 +205,11 @@ public:
     else
     {
       // omega = D u (Eq. 5); gamma = harmonic part (Eq. 9) when the curve has interior endpoints
-      if(hodge_factorization.valid()) hodge_factorization.get();   // rethrows a failed factorization
+      if(hodge_factorization.valid())
+      {
+        basis_solves.help();
+        hodge_factorization.get();   // rethrows a failed factorization
+      }
       const std::vector<double> gamma = harmonic_part_of(r.u, endpoint, open_curve, options.harmonic_basis_max_classes);
       if(verbose && open_curve)
         std::cerr << "[swn] harmonic part: " << (basis_.assembled() ? "projection on " + std::to_string(basis_.size()) +
@@ -279,7 +291,8 @@ public:
   // they may still be computed by the other thread). A new 0-form Laplacian is not kept: held through
   // the residual step, its memory slowed that step down (the 380-case benchmark: residual +15 %,
   // peak +15 %, 2026-12-03).
-  void prepare_hodge_projection(std::size_t max_classes, std::shared_future<Cohomology_generators> generators)
+  void prepare_hodge_projection(std::size_t max_classes, std::shared_future<Cohomology_generators> generators,
+                                Shared_work* share = nullptr)
   {
     if(hodge_ready()) return;
     if(expected_classes() <= max_classes)
@@ -294,7 +307,7 @@ public:
       const Cohomology_generators& gen = generators.get();
       if(gen.complete && gen.size() <= max_classes)
       {
-        basis_.assemble(m_, star_, gen, *L0);
+        basis_.assemble(m_, star_, gen, *L0, share);
         return;
       }
     }
