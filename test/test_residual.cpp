@@ -345,6 +345,9 @@ TEST(LemonResidual, NameAndDefaults)
   EXPECT_EQ(l.narrow_curve_band_nodes(), 1000000u);
   p.set_narrow_curve_bands(0);
   EXPECT_EQ(p.narrow_curve_band_nodes(), 0u);
+  EXPECT_EQ(l.split_band_nodes(), 5000u);
+  p.set_split_bands(0);
+  EXPECT_EQ(p.split_band_nodes(), 0u);
 }
 
 TEST(LemonResidual, RandomClosedProblemsMatchGLPK)
@@ -1045,28 +1048,36 @@ TEST(LemonResidual, MultilevelParametersChangeTheTimeNotTheOptimum)
   struct Setting { std::size_t coarsest, cluster; int radius; };
   const Setting settings[] = {{12, 2, 0}, {12, 4, 1}, {12, 16, 6}, {12, 64, 2}, {50, 16, 0}, {2000, 16, 6}};
   std::set<std::size_t> depths;
-  std::size_t refined = 0, descended = 0, narrower = 0;
+  std::size_t refined = 0, descended = 0, narrower = 0, split = 0;
   std::size_t wide_band = 0;
   for(const Setting& s : settings)
     for(std::size_t descent : {std::size_t(0), std::size_t(30)})
       for(std::size_t narrow : {std::size_t(0), std::size_t(1000000)})   // off, on (the default)
+        for(std::size_t halves : {std::size_t(0), std::size_t(40)})        // first bands in halves: never, from 40 nodes
     {
       const std::string what = "coarsest " + std::to_string(s.coarsest) + ", clusters of " + std::to_string(s.cluster) +
                                ", radius " + std::to_string(s.radius) + ", descent steps " + std::to_string(descent) +
-                               ", narrow curve bands up to " + std::to_string(narrow) + " nodes";
+                               ", narrow curve bands up to " + std::to_string(narrow) + " nodes, bands in halves from " +
+                               std::to_string(halves) + " nodes";
       Lemon lemon(Lemon::MULTILEVEL);
       lemon.set_multilevel_parameters(s.coarsest, s.cluster, s.radius, 16);
       lemon.set_finest_band_radius(2 * s.radius);
       lemon.set_descent_steps(descent);
       lemon.set_narrow_curve_bands(narrow);
+      lemon.set_split_bands(halves);
       ASSERT_TRUE(lemon.solve_residual(P, sigma)) << what << ": " << lemon.error();
       EXPECT_LE(P.max_violation(sigma), 1e-9) << what;
       EXPECT_NEAR(P.objective(sigma), o, 1e-9 * (1 + o)) << what;
       EXPECT_TRUE(lemon.statistics().certified) << what;
       EXPECT_FALSE(lemon.statistics().fallback) << what;   // certified by the hierarchy, not by a whole solve
       depths.insert(lemon.statistics().levels);
-      if(narrow == 0) wide_band = lemon.statistics().largest_band;
-      else narrower += lemon.statistics().largest_band < wide_band;
+      if(halves == 0)
+      {
+        EXPECT_EQ(lemon.statistics().split_bands, 0u) << what;
+        if(narrow == 0) wide_band = lemon.statistics().largest_band;
+        else narrower += lemon.statistics().largest_band < wide_band;
+      }
+      split += lemon.statistics().split_bands > 0;
       refined += lemon.statistics().refinements > 0;
       descended += lemon.statistics().descent_steps > 0;
     }
@@ -1074,6 +1085,7 @@ TEST(LemonResidual, MultilevelParametersChangeTheTimeNotTheOptimum)
   EXPECT_GE(refined, 2u);         // some were certified only after refinements around barriers
   EXPECT_GE(descended, 2u);       // and some after descent steps along them
   EXPECT_GE(narrower, 2u);        // narrow curve bands did shrink the largest band
+  EXPECT_GE(split, 4u);           // and bands were solved in halves (then certified all the same)
   EXPECT_EQ(*depths.begin(), 1u);   // coarsest 2000: the problem is its own coarsest level
 }
 

@@ -127,6 +127,7 @@ public:
     std::size_t descent_pieces = 0;      ///< `MULTILEVEL`: connected pieces that those steps moved, each by its own line search (at least `descent_steps`)
     std::size_t descent_lowerings = 0;   ///< `MULTILEVEL`: steps that lowered pieces of a barrier's complement rather than raising pieces of the barrier
     std::size_t largest_band = 0;        ///< `MULTILEVEL`: nodes of the largest problem given to network simplex
+    std::size_t split_bands = 0;         ///< `MULTILEVEL`: first bands solved in two halves (see `set_split_bands()`)
     std::size_t certificates = 0;        ///< `MULTILEVEL`: maximum flows run (every level, every refinement)
     std::size_t max_flow_fallbacks = 0;  ///< `MULTILEVEL`: maximum flows that Boykov-Kolmogorov finished (push-relabel over its budget, or slower in a race, see `set_concurrent_max_flows()`)
     double objective = 0;                ///< Eq. 11 objective of `sigma`, recomputed with the original data
@@ -292,6 +293,23 @@ public:
   void set_narrow_curve_bands(std::size_t max_nodes) { narrow_curve_band_nodes_ = max_nodes; }
   /// the largest problem, in faces, whose first bands are narrow along the curve (see `set_narrow_curve_bands()`)
   std::size_t narrow_curve_band_nodes() const { return narrow_curve_band_nodes_; }
+
+  /*!
+  the first band of a level of `MULTILEVEL` (the band around the jumps of the coarser answer) with at
+  least `min_nodes` nodes (default 5,000; 0: never) is cut in two halves by a breadth-first level of
+  its largest connected part (or, if no part holds half of it, by giving whole parts to either half).
+  That level, and the pieces of the outside that touch both halves, keep their shifts; the two halves
+  (with the pieces that touch only them) are independent problems, solved by network simplex at once
+  on two threads (one after the other if no thread can be started), and then a band of
+  `band_radius()` arcs around the cut is solved as well. Network simplex costs more than linearly in
+  the size of the band, and the certificates and descent steps that follow repair what the cut costs.
+  Measured (`benchmark/residual_solvers.md`): residual alone 10-26 % faster on five of seven of the
+  slowest cases of the benchmark (23k-188k faces), about the same on the other two; 13.0 -> 10.4 s on
+  1.15M faces (genus 10). Changes the running time, never the optimum.
+  */
+  void set_split_bands(std::size_t min_nodes) { split_band_nodes_ = min_nodes; }
+  /// the smallest first band that is solved in two halves (see `set_split_bands()`)
+  std::size_t split_band_nodes() const { return split_band_nodes_; }
 
   /// why the last solve failed (empty after a success)
   const std::string& error() const { return error_; }
@@ -1153,6 +1171,18 @@ private:
           if(dist[e.L] < 0) dist[e.L] = 0;
           if(dist[e.R] < 0) dist[e.R] = 0;
         }
+    if(around_jumps && split_band_nodes_ > 0)
+    {
+      std::size_t nb = 0;
+      for(int d : dist) nb += d >= 0 ? 1 : 0;
+      if(nb >= split_band_nodes_)
+      {
+        std::vector<char> seam;
+        if(solve_band_in_halves(lv, adj, dist, U, pi, seam, why))   // then the band around the cut
+          return std::find(seam.begin(), seam.end(), 1) == seam.end() || refine(lv, U, pi, seam, band_radius_, false, false, why);
+        if(!why.empty()) return false;
+      }
+    }
     // band nodes first, then one node per connected piece of the rest
     std::vector<std::size_t> id(lv.n, npos);
     std::size_t n = 0;
@@ -1184,6 +1214,161 @@ private:
     lv.x.resize(lv.arcs.size(), 0);
     for(std::size_t k = 0; k < sub.size(); ++k) lv.x[level_arc[k]] = x[k];
     normalize(lv, pi);
+    return true;
+  }
+
+  // set_split_bands(): the band (dist >= 0) cut in two halves A and B by a breadth-first level S of
+  // its largest part; S and the pieces of the outside that touch both halves keep their shifts (one
+  // ground node in each half's problem); A and B, each with the pieces that touch only it, solved by
+  // network simplex at once on two threads. seam: S (possibly empty). False with `why` empty if the
+  // band does not split (pi and the flows unchanged), with `why` set if network simplex failed.
+  bool solve_band_in_halves(Level& lv, const Adjacency& adj, const std::vector<int>& dist, Int U, std::vector<Int>& pi,
+                            std::vector<char>& seam, std::string& why)
+  {
+    const auto t0 = std::chrono::steady_clock::now();
+    auto in_band = [&](std::size_t v) { return dist[v] >= 0; };
+    // the band's connected parts; the largest one cut by a breadth-first level (from a far node) so
+    // that A holds about half of the band, the other parts going to B (A takes whole parts first if
+    // the largest is less than half)
+    std::vector<std::size_t> part(lv.n, npos);
+    const std::size_t nparts = number_pieces(lv, adj, in_band, part, 0);
+    std::vector<std::size_t> part_size(nparts, 0);
+    std::size_t nb_total = 0;
+    for(std::size_t v = 0; v < lv.n; ++v) if(in_band(v)) { ++part_size[part[v]]; ++nb_total; }
+    const std::size_t largest = std::size_t(std::max_element(part_size.begin(), part_size.end()) - part_size.begin());
+    std::vector<char> side(lv.n, 0);   // 1: A, 2: B, 3: ground (S or a piece touching both)
+    std::size_t na = 0, nbn = 0, ns = 0;
+    if(2 * part_size[largest] <= nb_total)
+    {
+      // whole parts, largest first into A until half
+      std::vector<std::size_t> order(nparts);
+      for(std::size_t p = 0; p < nparts; ++p) order[p] = p;
+      std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return part_size[a] > part_size[b]; });
+      std::vector<char> part_side(nparts, 2);
+      std::size_t in_a = 0;
+      for(std::size_t p : order)
+        if(2 * (in_a + part_size[p]) <= nb_total + part_size[p]) { part_side[p] = 1; in_a += part_size[p]; }
+      for(std::size_t v = 0; v < lv.n; ++v)
+        if(in_band(v)) { side[v] = part_side[part[v]]; (side[v] == 1 ? na : nbn) += 1; }
+    }
+    else
+    {
+      std::vector<long> level(lv.n, -1);
+      std::vector<std::size_t> queue;
+      std::size_t start = npos;
+      for(std::size_t v = 0; v < lv.n && start == npos; ++v) if(in_band(v) && part[v] == largest) start = v;
+      auto bfs = [&](std::size_t root) {
+        std::fill(level.begin(), level.end(), -1);
+        queue.assign(1, root);
+        level[root] = 0;
+        for(std::size_t q = 0; q < queue.size(); ++q)
+        {
+          const std::size_t x = queue[q];
+          for(std::size_t k = adj.first[x]; k < adj.first[x + 1]; ++k)
+          {
+            const Int_arc& e = lv.arcs[adj.arc[k]];
+            const std::size_t y = e.L == x ? e.R : e.L;
+            if(level[y] < 0 && in_band(y)) { level[y] = level[x] + 1; queue.push_back(y); }
+          }
+        }
+        return queue.back();
+      };
+      bfs(bfs(start));
+      const long cut = level[queue[nb_total / 2]];
+      for(std::size_t v = 0; v < lv.n; ++v)
+      {
+        if(!in_band(v)) continue;
+        if(level[v] < 0 || level[v] > cut) { side[v] = 2; ++nbn; }
+        else if(level[v] < cut) { side[v] = 1; ++na; }
+        else { side[v] = 3; ++ns; }
+      }
+    }
+    if(na == 0 || nbn == 0) return false;
+    // pieces of the outside
+    std::vector<std::size_t> piece(lv.n, npos);
+    const std::size_t np = number_pieces(lv, adj, [&](std::size_t v) { return !in_band(v); }, piece, 0);
+    std::vector<char> touch(np, 0);
+    for(const Int_arc& e : lv.arcs)
+    {
+      if(!in_band(e.L) && in_band(e.R)) touch[piece[e.L]] |= side[e.R] == 1 ? 1 : side[e.R] == 2 ? 2 : 0;
+      if(!in_band(e.R) && in_band(e.L)) touch[piece[e.R]] |= side[e.L] == 1 ? 1 : side[e.L] == 2 ? 2 : 0;
+    }
+    // the ground: one node of each subproblem; A, B: band nodes then pieces
+    std::vector<std::size_t> id(lv.n, npos);
+    std::size_t cnt[3] = {0, 1, 1};   // node 0 of each subproblem is the ground
+    std::vector<std::size_t> piece_id(np, npos);
+    std::vector<char> piece_side(np, 3);
+    for(std::size_t p = 0; p < np; ++p)
+      piece_side[p] = touch[p] == 1 ? 1 : touch[p] == 2 ? 2 : 3;
+    auto side_of = [&](std::size_t v) { return in_band(v) ? side[v] : piece_side[piece[v]]; };
+    for(std::size_t v = 0; v < lv.n; ++v)
+      if(in_band(v) && side[v] != 3) id[v] = cnt[side[v]]++;
+    for(std::size_t p = 0; p < np; ++p)
+      if(piece_side[p] != 3) piece_id[p] = cnt[piece_side[p]]++;
+    auto node = [&](std::size_t v) -> std::size_t {
+      const char s = side_of(v);
+      if(s == 3) return 0;
+      return in_band(v) ? id[v] : piece_id[piece[v]];
+    };
+    std::vector<Int_arc> sub[3];
+    std::vector<std::size_t> level_arc[3];
+    for(std::size_t i = 0; i < lv.arcs.size(); ++i)
+    {
+      const Int_arc& e = lv.arcs[i];
+      if(!in_band(e.L) && !in_band(e.R)) continue;   // inside a piece (or between pieces: none)
+      const char sl = side_of(e.L), sr = side_of(e.R);
+      if(sl == 3 && sr == 3) continue;   // fixed on both ends
+      const char s = sl == 3 ? sr : sl;
+      if(sl != 3 && sr != 3 && sl != sr) return false;   // cannot happen: S separates
+      Int_arc x = e;
+      x.L = node(e.L);
+      x.R = node(e.R);
+      x.sh = tension(e, pi);
+      sub[int(s)].push_back(x);
+      level_arc[int(s)].push_back(i);
+    }
+    std::vector<Int> delta[3], flow[3];
+    std::string why_b;
+    bool ok_b = false;
+    auto solve = [&](int s, std::string& w) {
+      flow[s].assign(sub[s].size(), 0);
+      Network net;
+      make_network(sub[s], U, net);
+      if(net.cap.empty()) { delta[s].assign(cnt[s], 0); return true; }
+      std::vector<Int> f;
+      if(!run(NETWORK_SIMPLEX, cnt[s], net, delta[s], f, w)) return false;
+      for(std::size_t k = 0; k < f.size(); ++k)
+      {
+        const Int_arc& e = sub[s][net.owner[k]];
+        flow[s][net.owner[k]] += net.tail[k] == e.R ? f[k] : -f[k];
+      }
+      return true;
+    };
+    std::future<void> other;
+    try { other = std::async(std::launch::async, [&] { ok_b = solve(2, why_b); }); }
+    catch(const std::system_error&) {}   // no second thread: one after the other
+    const bool ok_a = solve(1, why);
+    if(other.valid()) other.get();
+    else ok_b = solve(2, why_b);
+    if(!ok_a) return false;
+    if(!ok_b) { why = why_b; return false; }
+    for(std::size_t v = 0; v < lv.n; ++v)
+    {
+      const char s = side_of(v);
+      if(s == 3) continue;
+      pi[v] += delta[int(s)][node(v)] - delta[int(s)][0];
+    }
+    lv.x.resize(lv.arcs.size(), 0);
+    for(int s = 1; s <= 2; ++s)
+      for(std::size_t k = 0; k < sub[s].size(); ++k) lv.x[level_arc[s][k]] = flow[s][k];
+    normalize(lv, pi);
+    seam.assign(lv.n, 0);
+    for(std::size_t v = 0; v < lv.n; ++v) if(in_band(v) && side[v] == 3) seam[v] = 1;
+    stats_.largest_band = (std::max)(stats_.largest_band, (std::max)(cnt[1], cnt[2]));
+    ++stats_.split_bands;
+    if(verbose_)
+      std::cerr << "[swn] multilevel: band in halves of " << cnt[1] << " and " << cnt[2] << " nodes (seam " << ns
+                << ", pieces " << np << ") solved in " << seconds(t0) << " s\n";
     return true;
   }
 
@@ -1811,6 +1996,7 @@ private:
   int band_radius_ = 3;
   double push_relabel_budget_ = 200;
   bool concurrent_max_flows_ = true;
+  std::size_t split_band_nodes_ = 5000;
   std::size_t concurrent_max_flow_nodes_ = 500000;
   std::size_t narrow_curve_band_nodes_ = 1000000;
   std::size_t descent_steps_ = 1000;
