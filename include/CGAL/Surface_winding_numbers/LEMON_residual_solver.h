@@ -146,7 +146,8 @@ public:
   parallel arcs merge), solves the coarsest one (at most 2000 nodes) with `NETWORK_SIMPLEX`, and on
   each finer level re-solves only a band of nodes around the jumps of the coarser answer (every
   connected piece of the rest contracted to one node; along the curve, where the jumps do not move,
-  only their faces, see `set_narrow_curve_bands()`). The optimal flows of these network simplex
+  only their faces, see `set_narrow_curve_bands()`; a large band is cut in two halves solved at once
+  on two threads, see `set_split_bands()`). The optimal flows of these network simplex
   runs are carried down the hierarchy (on each level, the imbalances left by sharing a coarse arc's
   flow among its fine arcs are routed inside each cluster and each small region of the coarser
   levels first), and on the finest level a maximum flow completes them into
