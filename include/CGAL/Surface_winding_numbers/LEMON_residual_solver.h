@@ -1107,16 +1107,27 @@ private:
                    std::string& why)
   {
     stats_.largest_band = (std::max)(stats_.largest_band, n);
+    if(!network_simplex_with_flows(n, arcs, U, pi, x, why)) return false;
+    if(!arcs.empty()) stats_.certified = has_wide;   // as certify() does
+    return true;
+  }
+
+  // network simplex on `arcs` over n nodes, its optimum checked by duality (duality_holds()): the
+  // potentials pi and, per arc, the flow x (R->L arcs carry x > 0). Touches no member: two threads
+  // may run it at once (set_split_bands()).
+  bool network_simplex_with_flows(std::size_t n, const std::vector<Int_arc>& arcs, Int U, std::vector<Int>& pi,
+                                  std::vector<Int>& x, std::string& why) const
+  {
     x.assign(arcs.size(), 0);
     Network net;
     make_network(arcs, U, net);
     if(net.cap.empty()) { pi.assign(n, 0); return true; }
     std::vector<Int> flow;
-    if(!(run(NETWORK_SIMPLEX, n, net, pi, flow, why) && certify(net, pi, flow, why))) return false;
+    if(!(run(NETWORK_SIMPLEX, n, net, pi, flow, why) && duality_holds(net, pi, flow, why))) return false;
     for(std::size_t k = 0; k < flow.size(); ++k)
     {
       const Int_arc& e = arcs[net.owner[k]];
-      x[net.owner[k]] += net.tail[k] == e.R ? flow[k] : -flow[k];   // R->L arcs carry x > 0
+      x[net.owner[k]] += net.tail[k] == e.R ? flow[k] : -flow[k];
     }
     return true;
   }
@@ -1331,20 +1342,7 @@ private:
     std::vector<Int> delta[3], flow[3];
     std::string why_b;
     bool ok_b = false;
-    auto solve = [&](int s, std::string& w) {
-      flow[s].assign(sub[s].size(), 0);
-      Network net;
-      make_network(sub[s], U, net);
-      if(net.cap.empty()) { delta[s].assign(cnt[s], 0); return true; }
-      std::vector<Int> f;
-      if(!run(NETWORK_SIMPLEX, cnt[s], net, delta[s], f, w)) return false;
-      for(std::size_t k = 0; k < f.size(); ++k)
-      {
-        const Int_arc& e = sub[s][net.owner[k]];
-        flow[s][net.owner[k]] += net.tail[k] == e.R ? f[k] : -f[k];
-      }
-      return true;
-    };
+    auto solve = [&](int s, std::string& w) { return network_simplex_with_flows(cnt[s], sub[s], U, delta[s], flow[s], w); };
     std::future<void> other;
     try { other = std::async(std::launch::async, [&] { ok_b = solve(2, why_b); }); }
     catch(const std::system_error&) {}   // no second thread: one after the other
@@ -1960,6 +1958,15 @@ private:
   bool certify(const Network& net, const std::vector<Int>& pi, const std::vector<Int>& flow, std::string& why)
   {
     stats_.certified = false;
+    if(!duality_holds(net, pi, flow, why)) return false;
+    stats_.certified = has_wide;
+    return true;
+  }
+
+  // the flow is a circulation within the capacities, and (where the compiler has 128-bit integers)
+  // its cost equals the dual objective of pi: both optimal
+  static bool duality_holds(const Network& net, const std::vector<Int>& pi, const std::vector<Int>& flow, std::string& why)
+  {
     std::vector<Wide> balance(pi.size(), Wide(0));
     Wide primal = 0, dual = 0;
     for(std::size_t i = 0; i < net.cap.size(); ++i)
@@ -1979,7 +1986,6 @@ private:
       why = "the duality certificate failed (the potentials are not optimal)";
       return false;
     }
-    stats_.certified = has_wide;
     return true;
   }
 
