@@ -18,6 +18,7 @@
 #include <limits>
 #include <string>
 #include <map>
+#include <memory>
 #include <random>
 #include <thread>
 #include <vector>
@@ -612,15 +613,28 @@ struct Opaque_solver_traits
 };
 } // namespace
 
+namespace {
+// a torus mesh (torus_mesh(nu, nv)), its tables and their cotan weights, for the 0-form Laplacian's solves
+struct Torus_tables
+{
+  Mesh mesh;
+  std::unique_ptr<SWN::Surface_winding_numbers_solver<Mesh>> solver;
+  std::vector<double> w;
+  Torus_tables(int nu, int nv)
+  {
+    torus_mesh(mesh, nu, nv);
+    solver.reset(new SWN::Surface_winding_numbers_solver<Mesh>(mesh));
+    SI::cotan_weights(solver->tables(), w);
+  }
+};
+} // namespace
+
 TEST(HarmonicPart, ManyColumnSolveAgreesWithColumnByColumn)
 {
   // more right-hand sides than one block of the many-column solve, the last block partial
-  Mesh m;
-  torus_mesh(m, 16, 9);
-  SWN::Surface_winding_numbers_solver<Mesh> s(m);
-  const SI::Mesh_tables& t = s.tables();
-  std::vector<double> w;
-  SI::cotan_weights(t, w);
+  const Torus_tables torus(16, 9);
+  const SI::Mesh_tables& t = torus.solver->tables();
+  const std::vector<double>& w = torus.w;
   const std::vector<char> none(t.nv, 0);
   SI::Jump_laplace_system<LA> A;
   SI::Jump_laplace_system<Opaque_solver_traits> B;
@@ -663,14 +677,10 @@ TEST(HarmonicPart, ManyColumnSolveSharedWithAHelperThreadGivesTheSameColumns)
   // the Hodge step's many-column solve, its blocks shared with a thread that calls help() (as the
   // solving thread does once it has solved for u), against the same solve alone: the same blocks
   // go through the same solves, so the columns agree exactly whichever thread solved them
-  Mesh m;
-  torus_mesh(m, 24, 13);
-  SWN::Surface_winding_numbers_solver<Mesh> s(m);
-  const SI::Mesh_tables& t = s.tables();
-  std::vector<double> w;
-  SI::cotan_weights(t, w);
+  const Torus_tables torus(24, 13);
+  const SI::Mesh_tables& t = torus.solver->tables();
   SI::Jump_laplace_system<LA> A;
-  A.jump_laplacian(t, w, std::vector<char>(t.nv, 0));
+  A.jump_laplacian(t, torus.w, std::vector<char>(t.nv, 0));
   const std::size_t k = 4 * SI::vertex_laplace_block + 5;
   const auto rhs = [&](std::size_t j, std::vector<double>& b) {
     b[(13 * j + 3) % t.nv] += 1;
