@@ -31,6 +31,16 @@ namespace internal {
 // refused certificates of the residual solver, 433 on a level of 188k nodes, 4x the time of
 // Boykov-Kolmogorov; benchmark/residual_solvers.md). Capacities are integers (`Int` signed); run()
 // takes a work budget.
+// asks the processor to fetch the cache line of p (a hint, no effect on the results)
+inline void prefetch(const void* p)
+{
+#if defined(__GNUC__) || defined(__clang__)
+  __builtin_prefetch(p);
+#else
+  (void)p;
+#endif
+}
+
 template <typename Int>
 class Warm_push_relabel
 {
@@ -225,8 +235,25 @@ private:
     queue_.clear();
     for(std::size_t v = 0; v < n_; ++v)
       if(b_[v] < 0) { label_[v] = 0; queue_.push_back(Index(v)); }
+    // the search is bound by memory latency on large graphs (each node of the queue, its arcs and
+    // its neighbours' labels and reverse arcs lie anywhere): the nodes a few places ahead in the
+    // queue are fetched in three stages, so that their data is in cache when their turn comes
+    // (first certificate of a level of 1.15M nodes: push-relabel 4.1-4.6 -> 3.0-3.2 s)
+    constexpr std::size_t ahead = 8;
     for(std::size_t h = 0; h < queue_.size(); ++h)
     {
+      const std::size_t queued = queue_.size();
+      if(h + 3 * ahead < queued) prefetch(first_.data() + queue_[h + 3 * ahead]);
+      if(h + 2 * ahead < queued) prefetch(half_.data() + first_[queue_[h + 2 * ahead]]);   // may be one past the end: a hint only
+      if(h + ahead < queued)
+      {
+        const Index a = queue_[h + ahead];
+        for(Index k = first_[a]; k < first_[a + 1]; ++k)
+        {
+          prefetch(label_.data() + half_[k].head);
+          prefetch(half_.data() + half_[k].rev);
+        }
+      }
       const Index w = queue_[h];
       for(Index k = first_[w]; k < first_[w + 1]; ++k)
       {
