@@ -957,18 +957,17 @@ private:
   // cluster, whose jump is 0 (subdifferential [-w, w]), by augmenting paths, then along the arcs
   // inside the clusters of clusters (each region of a coarser level adds up to 0 as well), and so
   // on up the hierarchy, while the regions have at most 512 nodes of the level on average and the
-  // searches of a region level stay within 16 arc scans per arc of the level (the same is done
-  // again for the first certificate of the level, after its band solve). What remains is left to
-  // the maximum flow of the certificate, which would otherwise have to route every imbalance of the
+  // searches of a region level stay within 16 arc scans per arc of the level. What remains is left
+  // to the maximum flow of the certificate, which would otherwise have to route every imbalance of the
   // level. On the 1.15M-face level of benchmark/residual_solvers.md the imbalanced nodes go from
   // 584,000 to 26,000 in 1.5 s, and the first certificate took 12.5 s instead of 19-21 s (before
   // push-relabel had the gap heuristic). The budget: on a 751k-face level the searches of the 4th
   // and 5th region levels cost 196 and 302 scans per arc (2 and 4.8 s) for 21,800 -> 6,100
   // imbalanced nodes, more than they saved the certificate (residual 25.2 s; 15.3 s with the budget).
-  // With `lower` and `upper` (the subdifferentials at the level's answer), every arc inside a region
-  // takes part, within those bounds, and x is the flow to route (the certificate's starting flow).
-  void balance_inside_regions(const std::vector<Level>& levels, std::size_t l, std::vector<Int>& x,
-                              const std::vector<Int>* lower = nullptr, const std::vector<Int>* upper = nullptr) const
+  // (Until 2026-12-03 the first certificate's flow of a level, after its band solve, was routed so
+  // too, within the subdifferentials: once push-relabel had the gap heuristic, that made chain10's
+  // first finest certificate slower, 3.4-3.5 s against 2.8-2.9 s, and no other case faster.)
+  void balance_inside_regions(const std::vector<Level>& levels, std::size_t l, std::vector<Int>& x) const
   {
     const auto t0 = std::chrono::steady_clock::now();
     const Level& lv = levels[l];
@@ -981,7 +980,7 @@ private:
     std::size_t depth = 0, work = 0;
     for(std::size_t c = l + 1;; ++c)   // region[v]: v's node on level c
     {
-      work = route_inside_regions(lv, region, levels[c].n, excess, x, lower, upper, work_limit);
+      work = route_inside_regions(lv, region, levels[c].n, excess, x, work_limit);
       ++depth;
       // regions of more than max_routing_region nodes on average, or searches over their budget:
       // the coarser regions cost more than they save the certificate
@@ -989,7 +988,7 @@ private:
       for(std::size_t v = 0; v < lv.n; ++v) region[v] = levels[c].parent[region[v]];
     }
     if(verbose_)
-      std::cerr << "[swn] multilevel: " << (lower ? "certificate's flow" : "flow carried down") << " on level " << l << ": " << before << " imbalanced nodes, "
+      std::cerr << "[swn] multilevel: flow carried down on level " << l << ": " << before << " imbalanced nodes, "
                 << imbalanced() << " after routing inside the regions of " << depth << " coarser level(s)"
                 << (work > work_limit ? ", the last one stopped by its budget" : "") << " (" << seconds(t0) << " s)\n";
   }
@@ -999,8 +998,7 @@ private:
   // may lie anywhere in [-w, w]); stops once more than `work_limit` arcs were scanned. Returns the
   // arcs scanned.
   static std::size_t route_inside_regions(const Level& lv, const std::vector<std::size_t>& region, std::size_t nr,
-                                   std::vector<Int>& excess, std::vector<Int>& x, const std::vector<Int>* lower,
-                                   const std::vector<Int>* upper, std::size_t work_limit)
+                                   std::vector<Int>& excess, std::vector<Int>& x, std::size_t work_limit)
   {
     // the nodes of each region that have an excess, and the arcs inside the regions at each node
     std::vector<std::size_t> first(nr + 1, 0), member;
@@ -1015,14 +1013,10 @@ private:
     }
     if(member.empty()) return 0;
     std::size_t work = 0;
-    const Adjacency inside(lv.n, lv.arcs, [&](const Int_arc& e) {
-      return region[e.L] == region[e.R] && (lower != nullptr || contractible(e));
-    });
-    // room on arc i from its end `from` to the other: x can rise to its upper bound (L -> R) or fall
-    // to its lower one; [-w, w] without bounds (jump 0)
+    const Adjacency inside(lv.n, lv.arcs, [&](const Int_arc& e) { return region[e.L] == region[e.R] && contractible(e); });
+    // room on arc i from its end `from` to the other: its flow may lie anywhere in [-w, w] (jump 0)
     auto room = [&](std::size_t i, std::size_t from) {
       const Int_arc& e = lv.arcs[i];
-      if(lower != nullptr) return from == e.L ? (*upper)[i] - x[i] : x[i] - (*lower)[i];
       return from == e.L ? e.w - x[i] : x[i] + e.w;
     };
     // a search that finds no deficit marks what it reached as dead: a set that cannot reach a deficit
@@ -1576,9 +1570,8 @@ private:
       x0[i] = (std::min)(upper[i], (std::max)(lower[i], start));
     }
     // the band solved on the level changed the flows on its arcs, which leaves imbalances at the
-    // border of the pieces: routed inside the regions first as well, within the subdifferentials
-    // (not after a descent step: the certificate then starts from a maximum flow)
-    if(!after_descent && l + 1 < levels.size()) balance_inside_regions(levels, l, x0, &lower, &upper);
+    // border of the pieces: push-relabel settles them (see balance_inside_regions() on why they are
+    // no longer routed inside the regions first)
     node_supply(lv, x0, ws.supply);
     barrier.assign(n, 0);
     ++stats_.certificates;
