@@ -16,6 +16,16 @@ namespace CGAL {
 namespace Surface_winding_numbers {
 namespace internal {
 
+// asks the processor to fetch the cache line of p (a hint, no effect on the results)
+inline void prefetch(const void* p)
+{
+#if defined(__GNUC__) || defined(__clang__)
+  __builtin_prefetch(p);
+#else
+  (void)p;
+#endif
+}
+
 // Balancing a nearly balanced flow: every node carries a signed imbalance b (> 0: an excess it
 // must send on, < 0: a deficit it can absorb), and the excesses are pushed along residual arcs to
 // the deficits by the push-relabel method (Goldberg and Tarjan) in its first phase only, with the
@@ -31,16 +41,6 @@ namespace internal {
 // refused certificates of the residual solver, 433 on a level of 188k nodes, 4x the time of
 // Boykov-Kolmogorov; benchmark/residual_solvers.md). Capacities are integers (`Int` signed); run()
 // takes a work budget.
-// asks the processor to fetch the cache line of p (a hint, no effect on the results)
-inline void prefetch(const void* p)
-{
-#if defined(__GNUC__) || defined(__clang__)
-  __builtin_prefetch(p);
-#else
-  (void)p;
-#endif
-}
-
 template <typename Int>
 class Warm_push_relabel
 {
