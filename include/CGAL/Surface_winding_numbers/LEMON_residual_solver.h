@@ -1549,10 +1549,8 @@ private:
   //  * otherwise push-relabel within a work budget, then Boykov-Kolmogorov from where it stopped.
   // The barrier does not depend on which one finished (mark_barrier()). lv.x gets the flow found
   // (balanced on success).
-  bool repair_flow(std::vector<Level>& levels, std::size_t l, Int U, const std::vector<Int>& pi,
-                   std::vector<char>& barrier, bool after_descent)
+  bool repair_flow(Level& lv, Int U, const std::vector<Int>& pi, std::vector<char>& barrier, bool after_descent)
   {
-    Level& lv = levels[l];
     const std::size_t n = lv.n, na = lv.arcs.size();
     if(!lv.workspace) lv.workspace.reset(new Certificate_workspace());
     Certificate_workspace& ws = *lv.workspace;
@@ -1814,7 +1812,7 @@ private:
     for(;;)
     {
       const auto t0 = std::chrono::steady_clock::now();
-      const bool certified = repair_flow(levels, l, U, pi, barrier, after_descent);
+      const bool certified = repair_flow(lv, U, pi, barrier, after_descent);
       after_descent = false;
       if(verbose_)
       {
