@@ -1,6 +1,6 @@
 // Residual solvers (Eq. 11) on a real case: LEMON network flows vs GLPK's simplex.
 //
-//   residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--augment 0|1] [--scaling 0|1] [--simplex 0|1] [--multilevel 0|1] [--table 0|1] [--ml-radius R] [--ml-cluster C] [--ml-coarsest N] [--ml-refinements N] [--ml-descent N] [--ml-finest-radius R] [--mf-budget W] [--race MIN_NODES] [--narrow-curve MAX_NODES] [--split-bands MIN_NODES] [--single-blas 0|1] [--verbose]
+//   residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--augment 0|1] [--scaling 0|1] [--simplex 0|1] [--multilevel 0|1] [--table 0|1] [--ml-radius R] [--ml-cluster C] [--ml-coarsest N] [--ml-refinements N] [--ml-descent N] [--ml-finest-radius R] [--mf-budget W] [--race MIN_NODES] [--narrow-curve MAX_NODES] [--split-bands MIN_NODES] [--routing MIN_NODES] [--single-blas 0|1] [--verbose]
 //
 // Reads the mesh and its curves like the swn tool (OBJ `l` lines and/or a curve file), cuts the mesh
 // so that the curves lie on edges, optionally subdivides it N times 1-to-4 at the edge midpoints
@@ -125,6 +125,7 @@ int main(int argc, char** argv)
   long race_nodes = long(defaults.concurrent_max_flow_nodes());   // < 0: no concurrent maximum flows
   long narrow_nodes = long(defaults.narrow_curve_band_nodes());   // 0: no narrow curve bands
   long split_nodes = long(defaults.split_band_nodes());           // 0: no first bands in halves
+  long routing_nodes = long(defaults.carried_flow_routing_nodes()); // 0: carried-down flows routed on every level
   int descent = int(defaults.descent_steps()), finest_radius = defaults.finest_band_radius();
   int repeat = 3, subdivisions = 0;
   for(int i = 1; i < argc; ++i)
@@ -147,6 +148,7 @@ int main(int argc, char** argv)
     else if(a == "--race" && i + 1 < argc) race_nodes = std::atol(argv[++i]);
     else if(a == "--narrow-curve" && i + 1 < argc) narrow_nodes = std::atol(argv[++i]);
     else if(a == "--split-bands" && i + 1 < argc) split_nodes = std::atol(argv[++i]);
+    else if(a == "--routing" && i + 1 < argc) routing_nodes = std::atol(argv[++i]);
     else if(a == "--ml-descent" && i + 1 < argc) descent = std::atoi(argv[++i]);
     else if(a == "--ml-finest-radius" && i + 1 < argc) finest_radius = std::atoi(argv[++i]);
     else if(a == "--table" && i + 1 < argc) run_table = std::atoi(argv[++i]) != 0;
@@ -154,7 +156,7 @@ int main(int argc, char** argv)
     else if(a == "--verbose") verbose = true;
     else mesh_file = a;
   }
-  if(mesh_file.empty()) { std::fprintf(stderr, "usage: residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--augment 0|1] [--scaling 0|1] [--simplex 0|1] [--multilevel 0|1] [--table 0|1] [--ml-radius R] [--ml-cluster C] [--ml-coarsest N] [--ml-refinements N] [--ml-descent N] [--ml-finest-radius R] [--mf-budget W] [--race MIN_NODES] [--narrow-curve MAX_NODES] [--split-bands MIN_NODES] [--single-blas 0|1] [--verbose]\n"); return 2; }
+  if(mesh_file.empty()) { std::fprintf(stderr, "usage: residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--augment 0|1] [--scaling 0|1] [--simplex 0|1] [--multilevel 0|1] [--table 0|1] [--ml-radius R] [--ml-cluster C] [--ml-coarsest N] [--ml-refinements N] [--ml-descent N] [--ml-finest-radius R] [--mf-budget W] [--race MIN_NODES] [--narrow-curve MAX_NODES] [--split-bands MIN_NODES] [--routing MIN_NODES] [--single-blas 0|1] [--verbose]\n"); return 2; }
   if(single_blas) CGAL::Surface_winding_numbers::use_single_threaded_openblas();
 
   Mesh input;
@@ -247,6 +249,7 @@ int main(int argc, char** argv)
     lemon.set_finest_band_radius(finest_radius);
     lemon.set_narrow_curve_bands(std::size_t((std::max)(0L, narrow_nodes)));
     lemon.set_split_bands(std::size_t((std::max)(0L, split_nodes)));
+    lemon.set_carried_flow_routing(std::size_t((std::max)(0L, routing_nodes)));
     lemon.set_fallback(false);
     lemon.set_verbose(verbose);
     double best = 1e300;

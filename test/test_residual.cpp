@@ -211,13 +211,15 @@ void expect_matches_glpk(const SWN::Residual_problem& P, Lemon::Algorithm algori
   expect_solver_matches_glpk(lemon, P, what, lemon_objective);
 }
 
-// a multilevel solver whose hierarchy goes deep even on small problems
+// a multilevel solver whose hierarchy goes deep even on small problems, every level's carried-down
+// flow routed inside the coarser regions
 void make_deep(Lemon& lemon, std::size_t max_refinements = 8, std::size_t descent_steps = 30)
 {
   lemon.set_algorithm(Lemon::MULTILEVEL);
   lemon.set_multilevel_parameters(12, 4, 1, max_refinements);
   lemon.set_finest_band_radius(2);
   lemon.set_descent_steps(descent_steps);
+  lemon.set_carried_flow_routing(0);
 }
 
 const Lemon::Algorithm all_algorithms[] = {Lemon::COST_SCALING_PUSH, Lemon::COST_SCALING_AUGMENT,
@@ -348,6 +350,9 @@ TEST(LemonResidual, NameAndDefaults)
   EXPECT_EQ(l.split_band_nodes(), 5000u);
   p.set_split_bands(0);
   EXPECT_EQ(p.split_band_nodes(), 0u);
+  EXPECT_EQ(l.carried_flow_routing_nodes(), 100000u);
+  p.set_carried_flow_routing(0);
+  EXPECT_EQ(p.carried_flow_routing_nodes(), 0u);
 }
 
 TEST(LemonResidual, RandomClosedProblemsMatchGLPK)
@@ -1048,23 +1053,26 @@ TEST(LemonResidual, MultilevelParametersChangeTheTimeNotTheOptimum)
   struct Setting { std::size_t coarsest, cluster; int radius; };
   const Setting settings[] = {{12, 2, 0}, {12, 4, 1}, {12, 16, 6}, {12, 64, 2}, {50, 16, 0}, {2000, 16, 6}};
   std::set<std::size_t> depths;
-  std::size_t refined = 0, descended = 0, narrower = 0, split = 0;
+  std::size_t refined = 0, descended = 0, narrower = 0, split = 0, routed = 0;
   std::size_t wide_band = 0;
   for(const Setting& s : settings)
     for(std::size_t descent : {std::size_t(0), std::size_t(30)})
       for(std::size_t narrow : {std::size_t(0), std::size_t(1000000)})   // off, on (the default)
         for(std::size_t halves : {std::size_t(0), std::size_t(40)})        // first bands in halves: never, from 40 nodes
     {
+      // the carried-down flows routed inside the coarser regions on every level, or on none
+      const std::size_t routing = halves == 0 ? 0 : std::size_t(-1);
       const std::string what = "coarsest " + std::to_string(s.coarsest) + ", clusters of " + std::to_string(s.cluster) +
                                ", radius " + std::to_string(s.radius) + ", descent steps " + std::to_string(descent) +
                                ", narrow curve bands up to " + std::to_string(narrow) + " nodes, bands in halves from " +
-                               std::to_string(halves) + " nodes";
+                               std::to_string(halves) + " nodes, flows routed from " + std::to_string(routing) + " nodes";
       Lemon lemon(Lemon::MULTILEVEL);
       lemon.set_multilevel_parameters(s.coarsest, s.cluster, s.radius, 16);
       lemon.set_finest_band_radius(2 * s.radius);
       lemon.set_descent_steps(descent);
       lemon.set_narrow_curve_bands(narrow);
       lemon.set_split_bands(halves);
+      lemon.set_carried_flow_routing(routing);
       ASSERT_TRUE(lemon.solve_residual(P, sigma)) << what << ": " << lemon.error();
       EXPECT_LE(P.max_violation(sigma), 1e-9) << what;
       EXPECT_NEAR(P.objective(sigma), o, 1e-9 * (1 + o)) << what;
@@ -1078,6 +1086,8 @@ TEST(LemonResidual, MultilevelParametersChangeTheTimeNotTheOptimum)
         else narrower += lemon.statistics().largest_band < wide_band;
       }
       split += lemon.statistics().split_bands > 0;
+      if(routing != 0) EXPECT_EQ(lemon.statistics().routed_levels, 0u) << what;
+      routed += lemon.statistics().routed_levels > 0;
       refined += lemon.statistics().refinements > 0;
       descended += lemon.statistics().descent_steps > 0;
     }
@@ -1086,6 +1096,7 @@ TEST(LemonResidual, MultilevelParametersChangeTheTimeNotTheOptimum)
   EXPECT_GE(descended, 2u);       // and some after descent steps along them
   EXPECT_GE(narrower, 2u);        // narrow curve bands did shrink the largest band
   EXPECT_GE(split, 4u);           // and bands were solved in halves (then certified all the same)
+  EXPECT_GE(routed, 4u);          // and carried-down flows were routed inside the coarser regions
   EXPECT_EQ(*depths.begin(), 1u);   // coarsest 2000: the problem is its own coarsest level
 }
 
