@@ -4,7 +4,10 @@
   analyze.py DIR [--label NAME]
   analyze.py --compare LABEL=DIR...      one line per result directory (ablations)
   analyze.py --speed BEFORE AFTER        whole solve / first jump-Laplace solve on the cases with handles
-                                         of two runs of the same cases (issue 5's "<= 3x" target)
+                                         of two runs of the same cases (issue 5's "<= 3x" target); BEFORE and
+                                         AFTER may each list several runs of one code, comma-separated
+                                         (DIR1,DIR2): a case's ratio is then its mean over those runs, which
+                                         damps the machine's drift between runs
 
 Prints: headline numbers, errors by gap level, a classification of the cases with handles whose error
 is >= 0.5 %, the effect of planted loops sharing edges with region boundaries, per-mesh numbers and
@@ -48,14 +51,26 @@ def compare(items):
             pct(sum(1 for r in gh if r["loops_recovered"] == "1") / len(gh)), statistics.fmean(e(gh, "naive_error_percent"))))
 
 
-def speed(before_dir, after_dir):
+def speed(before_dirs, after_dirs):
     def load(d):
         return {r["case"]: r for r in csv.DictReader(open(os.path.join(d, "cases.csv"))) if r["ok"] == "1"}
-    A, B = load(before_dir), load(after_dir)
-    keys = [k for k in A if k in B and A[k]["simply_connected"] == "0"]
-    ratio = lambda r: float(r["time_total"]) / float(r["time_jump_laplace"])
-    same = sum(1 for k in keys if A[k]["error_percent"] == B[k]["error_percent"] and A[k]["G_edges"] == B[k]["G_edges"])
-    print("cases with handles in both runs: %d; same error and G: %d" % (len(keys), same))
+    runs = [[load(d) for d in ds.split(",")] for ds in (before_dirs, after_dirs)]
+    keys = [k for k in runs[0][0] if all(k in R for rs in runs for R in rs) and runs[0][0][k]["simply_connected"] == "0"]
+    # one row per case and code: the ratio and the residual as means over that code's runs
+    def merged(rs):
+        out = {}
+        for k in keys:
+            r = dict(rs[0][k])
+            r["ratio"] = statistics.fmean(float(R[k]["time_total"]) / float(R[k]["time_jump_laplace"]) for R in rs)
+            r["time_residual"] = statistics.fmean(float(R[k]["time_residual"]) for R in rs)
+            out[k] = r
+        return out
+    A, B = merged(runs[0]), merged(runs[1])
+    ratio = lambda r: r["ratio"]
+    same = sum(1 for k in keys if all(R[k]["error_percent"] == runs[0][0][k]["error_percent"] and
+                                      R[k]["G_edges"] == runs[0][0][k]["G_edges"] for rs in runs for R in rs))
+    print("cases with handles in every run: %d; same error and G in all: %d; runs per code: %d, %d" % (
+        len(keys), same, len(runs[0]), len(runs[1])))
     print("| faces | cases | whole / first solve <= 3x: before, after | median ratio: before, after | residual total (s): before, after |")
     print("|---|---|---|---|---|")
     for lo, hi in ((0, 40000), (40000, 100000), (100000, 10 ** 9), (0, 10 ** 9)):
