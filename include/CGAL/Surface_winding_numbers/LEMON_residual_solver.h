@@ -1735,7 +1735,8 @@ private:
       if(a < b) root[b] = a;
       else if(b < a) root[a] = b;
     }
-    for(std::size_t v = 0; v < lv.n; ++v)   // root[v] < v is already final
+    // flattened in increasing order: root[v] <= v, and every node below v already points to its root
+    for(std::size_t v = 0; v < lv.n; ++v)
     {
       root[v] = root[root[v]];
       if(root[v] == v) ++d.pieces[S[v] ? 1 : 0];
