@@ -938,7 +938,7 @@ private:
   // the flow of a coarser level carried to the arcs of this one: a bundle's flow is shared in
   // proportion to the weights (so |x| <= w when the bundle's |X| <= its weight; the units lost to
   // rounding go to arcs with room left, so that the shares add up to X exactly), then routed inside
-  // each cluster and region of the coarser levels (balance_inside_regions())
+  // each cluster and region of the coarser levels on large levels (balance_inside_regions())
   static void prolong_flow(Level& lv, const Level& coarse)
   {
     lv.x.assign(lv.arcs.size(), 0);
@@ -1755,16 +1755,16 @@ private:
       const Int J = tension(e, pi);
       const bool rises = S[e.L] != 0;   // J = sh + pi[L] - pi[R]
       const Wide slope = rises ? Wide(right_slope(e, J, U)) : -Wide(left_slope(e, J, U));
-      for(const std::size_t c : {root[e.L], root[e.R]})
+      const std::size_t ends[2] = {root[e.L], root[e.R]};   // one piece of S, one of its complement
+      for(const std::size_t c : ends) kinks.push_back(Kink{c, 0, slope});
+      // the kinks of the arc's cost (at 0 and at the bounds) ahead of J, the same for both pieces
+      for_each_kink(e, [&](Int b)
       {
-        kinks.push_back(Kink{c, 0, slope});
-        // the kinks of the arc's cost (at 0 and at the bounds) ahead of J
-        for_each_kink(e, [&](Int b)
-        {
-          const Int t = rises ? b - J : J - b;
-          if(t > 0) kinks.push_back(Kink{c, t, Wide(right_slope(e, b, U)) - Wide(left_slope(e, b, U))});
-        });
-      }
+        const Int t = rises ? b - J : J - b;
+        if(t <= 0) return;
+        const Wide rise = Wide(right_slope(e, b, U)) - Wide(left_slope(e, b, U));
+        for(const std::size_t c : ends) kinks.push_back(Kink{c, t, rise});
+      });
     }
     std::sort(kinks.begin(), kinks.end());
     d.step.assign(lv.n, 0);
