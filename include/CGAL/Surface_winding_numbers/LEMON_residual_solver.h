@@ -374,26 +374,13 @@ private:
   {
     std::vector<std::size_t> tail, head;
     std::vector<Int> cap, cost;
-    std::vector<Int> low;             // lower bounds (<= 0), one per arc, or empty: all 0
     std::vector<std::size_t> owner;   // the problem arc of each network arc (MULTILEVEL)
     std::size_t current = 0;
-    // an arc t -> h carrying a flow in [0, c] at cost k per unit
     void add(std::size_t t, std::size_t h, Int c, Int k)
     {
       if(c <= 0) return;
       tail.push_back(t); head.push_back(h); cap.push_back(c); cost.push_back(k); owner.push_back(current);
-      if(!low.empty()) low.push_back(0);
     }
-    // an arc t -> h carrying a flow in [l, c], l <= 0 <= c, at cost k per unit: the pair of arcs
-    // add(t, h, c, k) and add(h, t, -l, -k) in one
-    void add_both_ways(std::size_t t, std::size_t h, Int l, Int c, Int k)
-    {
-      if(c <= 0 && l >= 0) return;
-      if(low.empty()) low.assign(cap.size(), 0);
-      tail.push_back(t); head.push_back(h); cap.push_back(c); cost.push_back(k); owner.push_back(current);
-      low.push_back(l);
-    }
-    Int lower(std::size_t i) const { return low.empty() ? Int(0) : low[i]; }
   };
 
   bool fail(const std::string& why)
@@ -760,24 +747,20 @@ private:
     bool has_lo, has_up;
   };
 
-  // the circulation network of a list of arcs (the layout of step 5, with the two arcs of w |J| as
-  // one arc with a lower bound): J = sh + pi[L] - pi[R]; reduced cost c + pi[tail] - pi[head]: R->L
-  // with cost x - sh is active when J > x, L->R with cost sh - x when J < x. The arc R->L of cost
-  // -sh and flow in [-w, w] is the pair R->L and L->R of capacity w, in half as many arcs: network
-  // simplex on the bands of MULTILEVEL took 7 % less summed over ten mid-size cases, half on some
-  // (benchmark/residual_solvers.md, last section).
+  // the circulation network of a list of arcs (the layout of step 5): J = sh + pi[L] - pi[R];
+  // reduced cost c + pi[tail] - pi[head]: R->L with cost x - sh is active when J > x, L->R with
+  // cost sh - x when J < x
   static void make_network(const std::vector<Int_arc>& arcs, Int U, Network& net)
   {
     net = Network();
-    net.tail.reserve(2 * arcs.size()); net.head.reserve(2 * arcs.size());
-    net.cap.reserve(2 * arcs.size()); net.cost.reserve(2 * arcs.size());
-    net.low.reserve(2 * arcs.size());
+    net.tail.reserve(3 * arcs.size()); net.head.reserve(3 * arcs.size());
+    net.cap.reserve(3 * arcs.size()); net.cost.reserve(3 * arcs.size());
     for(const Int_arc& e : arcs)
     {
       net.current = std::size_t(&e - arcs.data());
       const bool merge_up = e.has_up && e.up == 0, merge_lo = e.has_lo && e.lo == 0;
-      // w (J)_+ (R->L) and w (-J)_+ (L->R, the negative flows)
-      net.add_both_ways(e.R, e.L, -(e.w + (merge_lo ? U : 0)), e.w + (merge_up ? U : 0), -e.sh);
+      net.add(e.R, e.L, e.w + (merge_up ? U : 0), -e.sh);          // w (J)_+
+      net.add(e.L, e.R, e.w + (merge_lo ? U : 0), e.sh);           // w (-J)_+
       if(e.has_up && !merge_up) net.add(e.R, e.L, U, e.up - e.sh);   // U (J - up)_+
       if(e.has_lo && !merge_lo) net.add(e.L, e.R, U, e.sh - e.lo);   // U (lo - J)_+
     }
@@ -1963,21 +1946,10 @@ private:
       cap[a] = net.cap[std::size_t(g.id(a))];
       cost[a] = net.cost[std::size_t(g.id(a))];
     }
-    if(!net.low.empty() && algorithm != NETWORK_SIMPLEX)
-    {
-      why = "lower bounds are handed to network simplex only";   // make_network() feeds run() with NETWORK_SIMPLEX
-      return false;
-    }
     if(algorithm == NETWORK_SIMPLEX)
     {
       lemon::NetworkSimplex<Graph, Int, Int> ns(g);
       ns.upperMap(cap).costMap(cost);
-      Graph::ArcMap<Int> low(g, Int(0));
-      if(!net.low.empty())
-      {
-        for(Graph::ArcIt a(g); a != lemon::INVALID; ++a) low[a] = net.low[std::size_t(g.id(a))];
-        ns.lowerMap(low);
-      }
       const auto status = ns.run(lemon::NetworkSimplex<Graph, Int, Int>::BLOCK_SEARCH);
       if(status != lemon::NetworkSimplex<Graph, Int, Int>::OPTIMAL)
       {
@@ -2038,12 +2010,12 @@ private:
     Wide primal = 0, dual = 0;
     for(std::size_t i = 0; i < net.cap.size(); ++i)
     {
-      const Int x = flow[i], l = net.lower(i);
-      if(x < l || x > net.cap[i]) { why = "the flow violates a capacity"; return false; }
+      const Int x = flow[i];
+      if(x < 0 || x > net.cap[i]) { why = "the flow violates a capacity"; return false; }
       balance[net.tail[i]] -= Wide(x);
       balance[net.head[i]] += Wide(x);
       const Wide rc = Wide(net.cost[i]) + Wide(pi[net.tail[i]]) - Wide(pi[net.head[i]]);
-      primal -= Wide(rc < 0 ? net.cap[i] : l) * rc;   // the arc's part of the tension cost
+      if(rc < 0) primal -= Wide(net.cap[i]) * rc;
       dual += Wide(net.cost[i]) * Wide(x);
     }
     for(const Wide& b : balance)
