@@ -6,6 +6,7 @@
 
 #include <CGAL/Surface_winding_numbers/Residual_problem.h>
 #include <CGAL/Surface_winding_numbers/internal/boykov_kolmogorov_flow.h>
+#include <CGAL/Surface_winding_numbers/internal/union_find.h>
 #include <CGAL/Surface_winding_numbers/internal/warm_push_relabel.h>
 
 #include <lemon/cost_scaling.h>
@@ -1719,26 +1720,19 @@ private:
   // 46k faces with 22 descent steps.)
   void descent_by_pieces(const Level& lv, Int U, const std::vector<Int>& pi, const std::vector<char>& S, Descent& d) const
   {
-    std::vector<std::size_t>& root = d.piece;   // a forest whose links point to smaller nodes
-    root.resize(lv.n);
-    for(std::size_t v = 0; v < lv.n; ++v) root[v] = v;
-    auto find = [&](std::size_t v) {
-      while(root[v] != v) { root[v] = root[root[v]]; v = root[v]; }
-      return v;
-    };
+    internal::Union_find sets(lv.n);
     std::vector<std::size_t> crossing;
     for(std::size_t i = 0; i < lv.arcs.size(); ++i)
     {
       const Int_arc& e = lv.arcs[i];
-      if(S[e.L] != S[e.R]) { crossing.push_back(i); continue; }
-      const std::size_t a = find(e.L), b = find(e.R);
-      if(a < b) root[b] = a;
-      else if(b < a) root[a] = b;
+      if(S[e.L] != S[e.R]) crossing.push_back(i);
+      else sets.unite(e.L, e.R);
     }
-    // flattened in increasing order: root[v] <= v, and every node below v already points to its root
+    std::vector<std::size_t>& root = d.piece;
+    root.resize(lv.n);
     for(std::size_t v = 0; v < lv.n; ++v)
     {
-      root[v] = root[root[v]];
+      root[v] = sets.find(v);
       if(root[v] == v) ++d.pieces[S[v] ? 1 : 0];
     }
     struct Kink

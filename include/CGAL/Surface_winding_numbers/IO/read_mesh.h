@@ -7,6 +7,7 @@
 #define CGAL_SURFACE_WINDING_NUMBERS_IO_READ_MESH_H
 
 #include <CGAL/Surface_winding_numbers/IO/errors.h>
+#include <CGAL/Surface_winding_numbers/internal/union_find.h>
 
 #include <CGAL/Surface_mesh.h>
 
@@ -21,7 +22,6 @@
 #include <iterator>
 #include <limits>
 #include <map>
-#include <numeric>
 #include <sstream>
 #include <string>
 #include <unordered_map>
@@ -897,22 +897,6 @@ inline void read_PLY_soup(std::istream& is, const std::string& file, Triangle_so
 
 // ------------------------------------------------------------------------------------------------ checks
 
-struct Union_find
-{
-  std::vector<std::size_t> parent;
-  explicit Union_find(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), std::size_t(0)); }
-  std::size_t find(std::size_t x)
-  {
-    while(parent[x] != x) { parent[x] = parent[parent[x]]; x = parent[x]; }
-    return x;
-  }
-  void unite(std::size_t a, std::size_t b)
-  {
-    a = find(a); b = find(b);
-    if(a != b) parent[std::max(a, b)] = std::min(a, b);
-  }
-};
-
 inline std::string edge_name(std::size_t a, std::size_t b)
 {
   return "(" + std::to_string(a) + ", " + std::to_string(b) + ")";
@@ -963,7 +947,7 @@ inline void check_triangle_soup(const Triangle_soup& soup, const std::string& fi
   // edges: at most two faces, traversed in opposite directions; the problem is reported at the first face (in
   // file order) that creates it. Vertices: the faces around each vertex must form a single fan; the corners
   // of two faces glued along an edge are united as the second face of the pair is met (one scan for both)
-  Union_find uf(3 * nf);
+  CGAL::Surface_winding_numbers::internal::Union_find uf(3 * nf);
   twin.assign(3 * nf, no_twin);
   auto local = [&](std::size_t f, std::size_t v) {
     const auto& t = soup.triangles[f];

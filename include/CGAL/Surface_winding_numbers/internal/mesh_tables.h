@@ -8,13 +8,13 @@
 #define CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_MESH_TABLES_H
 
 #include <CGAL/Surface_winding_numbers/Solve_report.h>
+#include <CGAL/Surface_winding_numbers/internal/union_find.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
-#include <numeric>
 #include <string>
 #include <vector>
 
@@ -134,25 +134,6 @@ struct Mesh_tables
       if(!component_is_disk_or_sphere(c)) return false;
     return true;
   }
-};
-
-// Disjoint sets over 0..n-1; the representative of a set is its smallest element.
-class Union_find
-{
-public:
-  explicit Union_find(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), std::size_t(0)); }
-  std::size_t find(std::size_t x)
-  {
-    while(parent_[x] != x) { parent_[x] = parent_[parent_[x]]; x = parent_[x]; }
-    return x;
-  }
-  void unite(std::size_t a, std::size_t b)
-  {
-    const std::size_t x = find(a), y = find(b);
-    if(x != y) parent_[std::max(x, y)] = std::min(x, y);
-  }
-private:
-  std::vector<std::size_t> parent_;
 };
 
 // Completes the tables from points, fv, fe, ev (and nv, nf, ne): orientation signs, incidences,
