@@ -32,7 +32,7 @@ COLUMNS = [
     "G_edges", "G_closed", "G_closing_units", "G_nonzero_in_homology", "G_homologous_to_planted", "G_planted_edges_matched",
     "loops_recovered", "cost_G", "cost_planted",
     "homology_correction", "hodge_projection", "lp_ran", "lp_variables", "lp_rows", "lp_objective",
-    "min_label", "max_label",
+    "min_label", "max_label", "labels_hash", "G_hash",
     "time_read", "time_construct", "time_setup", "time_jump_laplace", "time_hodge", "time_residual",
     "time_second_solve", "time_labels", "time_total", "time_swn", "time_naive", "peak_rss_mb",
     "api_match",

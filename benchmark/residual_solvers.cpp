@@ -1,11 +1,11 @@
 // Residual solvers (Eq. 11) on a real case: LEMON network flows vs GLPK's simplex.
 //
-//   residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--augment 0|1] [--scaling 0|1] [--simplex 0|1] [--multilevel 0|1] [--table 0|1] [--ml-radius R] [--ml-cluster C] [--ml-coarsest N] [--ml-refinements N] [--ml-descent N] [--ml-finest-radius R] [--mf-budget W] [--race MIN_NODES] [--narrow-curve MAX_NODES] [--split-bands MIN_NODES] [--routing MIN_NODES] [--single-blas 0|1] [--verbose]
+//   residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--simplex 0|1] [--multilevel 0|1] [--table 0|1] [--ml-radius R] [--ml-cluster C] [--ml-coarsest N] [--ml-refinements N] [--ml-descent N] [--ml-finest-radius R] [--mf-budget W] [--narrow-curve MAX_NODES] [--split-bands MIN_NODES] [--sequential] [--verbose]
 //
 // Reads the mesh and its curves like the swn tool (OBJ `l` lines and/or a curve file), cuts the mesh
 // so that the curves lie on edges, optionally subdivides it N times 1-to-4 at the edge midpoints
 // (the curves follow the split edges), then
-//  1. runs the whole solve once per residual solver (every LEMON algorithm, then GLPK) and prints
+//  1. runs the whole solve once per residual solver (LEMON network simplex and multilevel, then GLPK) and prints
 //     the report's timings and whether labels and G agree with the first run;
 //  2. solves the residual problem recorded from the pipeline alone with each solver (N repeats,
 //     best time) and prints time, objective and largest bound violation.
@@ -19,7 +19,6 @@
 #include <CGAL/Surface_winding_numbers/IO/curve_io.h>
 #include <CGAL/Surface_winding_numbers/IO/read_mesh.h>
 #include <CGAL/Surface_winding_numbers/LEMON_residual_solver.h>
-#include <CGAL/Surface_winding_numbers/single_threaded_blas.h>
 
 #include <array>
 #include <chrono>
@@ -115,49 +114,36 @@ static double now()
 int main(int argc, char** argv)
 {
   std::string mesh_file, curve_file;
-  bool run_glpk = true, run_whole = true, run_augment = true, run_scaling = true, run_simplex = true, run_cut = true, run_table = false, verbose = false;
-  // the library's defaults unless given
-  const Lemon defaults;
-  int ml_radius = defaults.band_radius(), ml_cluster = int(defaults.cluster_size()),
-      ml_coarsest = int(defaults.coarsest_nodes()), ml_refinements = int(defaults.max_refinements());
-  bool single_blas = true;   // one OpenBLAS thread per call, as the swn tool
-  double mf_budget = defaults.max_flow_budget();
-  long race_nodes = long(defaults.concurrent_max_flow_nodes());   // < 0: no concurrent maximum flows
-  long narrow_nodes = long(defaults.narrow_curve_band_nodes());   // 0: no narrow curve bands
-  long split_nodes = long(defaults.split_band_nodes());           // 0: no first bands in halves
-  long routing_nodes = long(defaults.carried_flow_routing_nodes()); // 0: carried-down flows routed on every level
-  int descent = int(defaults.descent_steps()), finest_radius = defaults.finest_band_radius();
+  bool run_glpk = true, run_whole = true, run_simplex = true, run_cut = true, run_table = false;
+  Lemon::Options options;   // the library's defaults unless given
   int repeat = 3, subdivisions = 0;
   for(int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
-    if(a == "--curve" && i + 1 < argc) curve_file = argv[++i];
-    else if(a == "--glpk" && i + 1 < argc) run_glpk = std::atoi(argv[++i]) != 0;
-    else if(a == "--repeat" && i + 1 < argc) repeat = std::atoi(argv[++i]);
-    else if(a == "--subdivide" && i + 1 < argc) subdivisions = std::atoi(argv[++i]);
-    else if(a == "--whole" && i + 1 < argc) run_whole = std::atoi(argv[++i]) != 0;
-    else if(a == "--augment" && i + 1 < argc) run_augment = std::atoi(argv[++i]) != 0;
-    else if(a == "--scaling" && i + 1 < argc) run_scaling = std::atoi(argv[++i]) != 0;
-    else if(a == "--simplex" && i + 1 < argc) run_simplex = std::atoi(argv[++i]) != 0;
-    else if(a == "--multilevel" && i + 1 < argc) run_cut = std::atoi(argv[++i]) != 0;
-    else if(a == "--ml-radius" && i + 1 < argc) ml_radius = std::atoi(argv[++i]);
-    else if(a == "--ml-cluster" && i + 1 < argc) ml_cluster = std::atoi(argv[++i]);
-    else if(a == "--ml-coarsest" && i + 1 < argc) ml_coarsest = std::atoi(argv[++i]);
-    else if(a == "--ml-refinements" && i + 1 < argc) ml_refinements = std::atoi(argv[++i]);
-    else if(a == "--mf-budget" && i + 1 < argc) mf_budget = std::atof(argv[++i]);
-    else if(a == "--race" && i + 1 < argc) race_nodes = std::atol(argv[++i]);
-    else if(a == "--narrow-curve" && i + 1 < argc) narrow_nodes = std::atol(argv[++i]);
-    else if(a == "--split-bands" && i + 1 < argc) split_nodes = std::atol(argv[++i]);
-    else if(a == "--routing" && i + 1 < argc) routing_nodes = std::atol(argv[++i]);
-    else if(a == "--ml-descent" && i + 1 < argc) descent = std::atoi(argv[++i]);
-    else if(a == "--ml-finest-radius" && i + 1 < argc) finest_radius = std::atoi(argv[++i]);
-    else if(a == "--table" && i + 1 < argc) run_table = std::atoi(argv[++i]) != 0;
-    else if(a == "--single-blas" && i + 1 < argc) single_blas = std::atoi(argv[++i]) != 0;
-    else if(a == "--verbose") verbose = true;
+    const bool more = i + 1 < argc;
+    if(a == "--curve" && more) curve_file = argv[++i];
+    else if(a == "--glpk" && more) run_glpk = std::atoi(argv[++i]) != 0;
+    else if(a == "--repeat" && more) repeat = std::atoi(argv[++i]);
+    else if(a == "--subdivide" && more) subdivisions = std::atoi(argv[++i]);
+    else if(a == "--whole" && more) run_whole = std::atoi(argv[++i]) != 0;
+    else if(a == "--simplex" && more) run_simplex = std::atoi(argv[++i]) != 0;
+    else if(a == "--multilevel" && more) run_cut = std::atoi(argv[++i]) != 0;
+    else if(a == "--ml-radius" && more) options.band_radius = std::atoi(argv[++i]);
+    else if(a == "--ml-cluster" && more) options.cluster_size = std::size_t(std::atol(argv[++i]));
+    else if(a == "--ml-coarsest" && more) options.coarsest_nodes = std::size_t(std::atol(argv[++i]));
+    else if(a == "--ml-refinements" && more) options.max_refinements = std::size_t(std::atol(argv[++i]));
+    else if(a == "--mf-budget" && more) options.max_flow_budget = std::atof(argv[++i]);
+    else if(a == "--narrow-curve" && more) options.narrow_curve_band_nodes = std::size_t(std::atol(argv[++i]));
+    else if(a == "--split-bands" && more) options.split_band_nodes = std::size_t(std::atol(argv[++i]));
+    else if(a == "--ml-descent" && more) options.descent_steps = std::size_t(std::atol(argv[++i]));
+    else if(a == "--ml-finest-radius" && more) options.finest_band_radius = std::atoi(argv[++i]);
+    else if(a == "--table" && more) run_table = std::atoi(argv[++i]) != 0;
+    else if(a == "--sequential") options.concurrent = false;
+    else if(a == "--verbose") options.verbose = true;
     else mesh_file = a;
   }
-  if(mesh_file.empty()) { std::fprintf(stderr, "usage: residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--augment 0|1] [--scaling 0|1] [--simplex 0|1] [--multilevel 0|1] [--table 0|1] [--ml-radius R] [--ml-cluster C] [--ml-coarsest N] [--ml-refinements N] [--ml-descent N] [--ml-finest-radius R] [--mf-budget W] [--race MIN_NODES] [--narrow-curve MAX_NODES] [--split-bands MIN_NODES] [--routing MIN_NODES] [--single-blas 0|1] [--verbose]\n"); return 2; }
-  if(single_blas) CGAL::Surface_winding_numbers::use_single_threaded_openblas();
+  if(mesh_file.empty()) { std::fprintf(stderr, "usage: residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--simplex 0|1] [--multilevel 0|1] [--table 0|1] [--ml-radius R] [--ml-cluster C] [--ml-coarsest N] [--ml-refinements N] [--ml-descent N] [--ml-finest-radius R] [--mf-budget W] [--narrow-curve MAX_NODES] [--split-bands MIN_NODES] [--sequential] [--verbose]\n"); return 2; }
+  auto with_algorithm = [&](Lemon::Algorithm a) { Lemon::Options o = options; o.algorithm = a; return o; };
 
   Mesh input;
   const SIO::Mesh_read_info info = SIO::read_mesh(mesh_file, input);
@@ -202,21 +188,14 @@ int main(int argc, char** argv)
     mesh.remove_property_map(G);
   };
   auto whole = [&](auto& solver, const char* name) { whole_np(solver, name, CGAL::parameters::default_values()); };
-  std::vector<Lemon::Algorithm> algorithms = {Lemon::NETWORK_SIMPLEX, Lemon::MULTILEVEL};
+  std::vector<Lemon::Algorithm> algorithms = {Lemon::Options::NETWORK_SIMPLEX, Lemon::Options::MULTILEVEL};
   std::vector<const char*> names = {"lemon NetworkSimplex/BLOCK_SEARCH", "lemon Multilevel"};
-  if(run_scaling)
-  {
-    algorithms.insert(algorithms.end(), {Lemon::COST_SCALING_PUSH, Lemon::COST_SCALING_PARTIAL_AUGMENT});
-    names.insert(names.end(), {"lemon CostScaling/PUSH", "lemon CostScaling/PARTIAL_AUGMENT"});
-    if(run_augment) { algorithms.push_back(Lemon::COST_SCALING_AUGMENT); names.push_back("lemon CostScaling/AUGMENT"); }
-  }
   if(!run_cut) { algorithms.erase(algorithms.begin() + 1); names.erase(names.begin() + 1); }
   if(!run_simplex) { algorithms.erase(algorithms.begin()); names.erase(names.begin()); }
   const int n_algorithms = int(algorithms.size());
   for(int k = 0; k < (run_whole ? n_algorithms : 1); ++k)
   {
-    Lemon lemon(algorithms[k]);
-    lemon.set_verbose(verbose);
+    Lemon lemon(with_algorithm(algorithms[k]));
     Recorder<Lemon> rec{lemon, {}};
     whole(rec, names[k]);
     if(k == 0) P = rec.problem;
@@ -224,7 +203,7 @@ int main(int argc, char** argv)
   if(run_table)
   {
     // the default residual solver with Eigen's LDLT instead of CHOLMOD, and the reduced residual
-    Lemon lemon;
+    Lemon lemon(options);
     whole_np(lemon, "lemon Multilevel + Eigen LDLT", CGAL::parameters::sparse_linear_solver(SWN::internal::Eigen_LDLT_sparse_solver()));
     whole_np(lemon, "lemon Multilevel, reduced residual", SWN::parameters::use_reduced_residual(true));
   }
@@ -241,17 +220,7 @@ int main(int argc, char** argv)
   double best_objective = 0;
   for(int k = 0; k < n_algorithms; ++k)
   {
-    Lemon lemon(algorithms[k]);
-    lemon.set_multilevel_parameters(std::size_t(ml_coarsest), std::size_t(ml_cluster), ml_radius, std::size_t(ml_refinements));
-    lemon.set_max_flow_budget(mf_budget);
-    lemon.set_concurrent_max_flows(race_nodes >= 0, std::size_t(race_nodes < 0 ? 0 : race_nodes));
-    lemon.set_descent_steps(std::size_t((std::max)(0, descent)));
-    lemon.set_finest_band_radius(finest_radius);
-    lemon.set_narrow_curve_bands(std::size_t((std::max)(0L, narrow_nodes)));
-    lemon.set_split_bands(std::size_t((std::max)(0L, split_nodes)));
-    lemon.set_carried_flow_routing(std::size_t((std::max)(0L, routing_nodes)));
-    lemon.set_fallback(false);
-    lemon.set_verbose(verbose);
+    Lemon lemon(with_algorithm(algorithms[k]));
     double best = 1e300;
     std::vector<double> sigma;
     bool ok = true;

@@ -33,6 +33,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -280,6 +281,15 @@ int main(int argc, char** argv)
       cost_G += w * std::abs(double(G_t[a.edge]));
       cost_P += w * std::abs(double(P_t[a.edge]));
     }
+    // FNV-1a hashes of the labels (by face) and of G (by edge) in the mesh's order: two builds agree on
+    // a case when their hashes do (benchmark/compare.py)
+    auto fnv = [](std::uint64_t h, long x) {
+      for(int k = 0; k < 8; ++k) { h ^= std::uint64_t(x >> (8 * k)) & 0xff; h *= 1099511628211ull; }
+      return h;
+    };
+    std::uint64_t labels_hash = 14695981039346656037ull, G_hash = labels_hash;
+    for(auto f : mesh.faces()) labels_hash = fnv(labels_hash, labels[f]);
+    for(auto e : mesh.edges()) G_hash = fnv(G_hash, G[e]);
     int max_label = 0, min_label = 0;
     for(int l : W) { max_label = std::max(max_label, l); min_label = std::min(min_label, l); }
 
@@ -314,6 +324,7 @@ int main(int argc, char** argv)
         << ", \"hodge_projection\": " << (rep.hodge_projection ? "true" : "false")
         << ", \"lp_ran\": " << (rep.lp_ran ? "true" : "false") << ", \"lp_variables\": " << rep.lp_variables
         << ", \"lp_rows\": " << rep.lp_rows << ", \"lp_objective\": " << rep.lp_objective
+        << ", \"labels_hash\": \"" << std::hex << labels_hash << "\", \"G_hash\": \"" << G_hash << std::dec << "\""
         << ", \"min_label\": " << min_label << ", \"max_label\": " << max_label
         << ", \"planted_edges_read\": " << planted_edges << ", \"G_edges\": " << G_edges
         << ", \"G_closed\": " << (G_closed ? "true" : "false")

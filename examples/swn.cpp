@@ -306,7 +306,7 @@ int main(int argc, char** argv)
       SWN::parameters::winding_number_map(w, SWN::parameters::nonbounding_chain_map(G,
       SWN::parameters::nonbounding_chain_real_map(g, SWN::parameters::bounding_chain_map(B,
       SWN::parameters::epsilon(opt.epsilon, SWN::parameters::use_reduced_residual(opt.reduced_residual,
-      SWN::parameters::concurrent_factorizations(!opt.sequential,
+      SWN::parameters::concurrency(!opt.sequential,
       SWN::parameters::lp_solver(std::ref(lp),
       SWN::parameters::report(std::ref(report))))))))))
         .verbose(opt.verbose).sparse_linear_solver(sparse_solver));
@@ -321,8 +321,9 @@ int main(int argc, char** argv)
   bool ok = false;
   SWN::GLPK_linear_program_traits glpk;
 #ifdef CGAL_SWN_USE_LEMON
-  SWN::LEMON_residual_solver lemon(opt.lp_solver == "lemon-simplex" ? SWN::LEMON_residual_solver::NETWORK_SIMPLEX
-                                                                     : SWN::LEMON_residual_solver::default_algorithm());
+  SWN::LEMON_residual_solver::Options lemon_options;
+  if(opt.lp_solver == "lemon-simplex") lemon_options.algorithm = SWN::LEMON_residual_solver::Options::NETWORK_SIMPLEX;
+  SWN::LEMON_residual_solver lemon(lemon_options);
   if(opt.lp_solver == "lemon" || opt.lp_solver == "lemon-simplex") ok = solve_with(lemon);
   else
 #endif

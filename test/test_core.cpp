@@ -1304,7 +1304,7 @@ TEST(ConcurrentFactorizations, SameAnswerAsSequential)
   ASSERT_TRUE(CGAL::surface_winding_numbers(m, chain, s.l1, SWN::parameters::nonbounding_chain_map(s.G1,
                 SWN::parameters::winding_number_map(w1, SWN::parameters::report(std::ref(concurrent))))));
   ASSERT_TRUE(CGAL::surface_winding_numbers(m, chain, s.l2, SWN::parameters::nonbounding_chain_map(s.G2,
-                SWN::parameters::winding_number_map(w2, SWN::parameters::concurrent_factorizations(false,
+                SWN::parameters::winding_number_map(w2, SWN::parameters::concurrency(CGAL::Sequential_tag(),
                 SWN::parameters::report(std::ref(sequential))))))) << sequential.error;
   EXPECT_TRUE(concurrent.hodge_projection);
   EXPECT_TRUE(sequential.hodge_projection);

@@ -7,8 +7,8 @@
 #include <CGAL/Surface_winding_numbers/GLPK_linear_program_traits.h>
 #include <CGAL/Surface_winding_numbers/LEMON_residual_solver.h>
 #include <CGAL/Surface_winding_numbers/internal/pipeline.h>
-#include <CGAL/Surface_winding_numbers/internal/boykov_kolmogorov_flow.h>
-#include <CGAL/Surface_winding_numbers/internal/warm_push_relabel.h>
+#include <CGAL/Surface_winding_numbers/internal/residual_flow/boykov_kolmogorov_flow.h>
+#include <CGAL/Surface_winding_numbers/internal/residual_flow/warm_push_relabel.h>
 
 #include <gtest/gtest.h>
 
@@ -30,6 +30,14 @@ namespace SWN = CGAL::Surface_winding_numbers;
 namespace SI = CGAL::Surface_winding_numbers::internal;
 typedef SI::Default_sparse_solver LA;
 typedef SWN::LEMON_residual_solver Lemon;
+typedef Lemon::Options Options;
+
+Options with_algorithm(Lemon::Algorithm a)
+{
+  Options o;
+  o.algorithm = a;
+  return o;
+}
 
 const double inf = std::numeric_limits<double>::infinity();
 
@@ -207,25 +215,26 @@ void expect_solver_matches_glpk(Lemon& lemon, const SWN::Residual_problem& P, co
 void expect_matches_glpk(const SWN::Residual_problem& P, Lemon::Algorithm algorithm, const std::string& what,
                          double* lemon_objective = nullptr)
 {
-  Lemon lemon(algorithm);
+  Lemon lemon(with_algorithm(algorithm));
   expect_solver_matches_glpk(lemon, P, what, lemon_objective);
 }
 
-// a multilevel solver whose hierarchy goes deep even on small problems, every level's carried-down
-// flow routed inside the coarser regions
-void make_deep(Lemon& lemon, std::size_t max_refinements = 8, std::size_t descent_steps = 30)
+// the options of a multilevel solver whose hierarchy goes deep even on small problems
+Options deep_options(std::size_t max_refinements = 8, std::size_t descent_steps = 30)
 {
-  lemon.set_algorithm(Lemon::MULTILEVEL);
-  lemon.set_multilevel_parameters(12, 4, 1, max_refinements);
-  lemon.set_finest_band_radius(2);
-  lemon.set_descent_steps(descent_steps);
-  lemon.set_carried_flow_routing(0);
+  Options o;
+  o.algorithm = Options::MULTILEVEL;
+  o.coarsest_nodes = 12;
+  o.cluster_size = 4;
+  o.band_radius = 1;
+  o.max_refinements = max_refinements;
+  o.finest_band_radius = 2;
+  o.descent_steps = descent_steps;
+  return o;
 }
 
-const Lemon::Algorithm all_algorithms[] = {Lemon::COST_SCALING_PUSH, Lemon::COST_SCALING_AUGMENT,
-                                          Lemon::COST_SCALING_PARTIAL_AUGMENT, Lemon::NETWORK_SIMPLEX,
-                                          Lemon::MULTILEVEL};
-const unsigned n_algorithms = 5;
+const Lemon::Algorithm all_algorithms[] = {Options::NETWORK_SIMPLEX, Options::MULTILEVEL};
+const unsigned n_algorithms = 2;
 
 // ---------------------------------------------------------------------------------------------
 // meshes
@@ -303,9 +312,11 @@ TEST(LemonResidual, NameAndDefaults)
 {
   EXPECT_STREQ(Lemon::name(), "lemon");
   Lemon l;
-  EXPECT_EQ(l.algorithm(), Lemon::default_algorithm());
+  EXPECT_EQ(l.options().algorithm, Options::MULTILEVEL);
+  EXPECT_TRUE(l.options().concurrent);
   EXPECT_TRUE(l.error().empty());
   static_assert(SI::is_residual_solver<Lemon>::value, "LEMON_residual_solver models SurfaceWindingNumbersResidualSolver");
+  static_assert(SI::takes_concurrency<Lemon>::value, "LEMON_residual_solver takes the concurrency setting");
   static_assert(!std::is_copy_constructible<Lemon>::value, "not copyable");
 #ifdef CGAL_SWN_USE_LEMON
   static_assert(std::is_same<SI::Default_linear_program_traits, Lemon>::value, "LEMON is the default residual solver");
@@ -315,44 +326,36 @@ TEST(LemonResidual, NameAndDefaults)
   const Random_problem rp = random_problem(11, true, 10., false);
   std::vector<double> sigma;
   ASSERT_TRUE(l.solve_residual(rp.P, sigma)) << l.error();
-  EXPECT_EQ(l.algorithm(), Lemon::MULTILEVEL);
-  EXPECT_EQ(l.statistics().algorithm, Lemon::MULTILEVEL);
+  EXPECT_EQ(l.statistics().algorithm, Options::MULTILEVEL);
   EXPECT_EQ(l.statistics().levels, 1u);
   EXPECT_FALSE(l.statistics().fallback);
   EXPECT_TRUE(l.statistics().certified);
   EXPECT_GE(l.statistics().cost_exponent, 30);
-  // the parameters read back as set, clamped where the setter clamps
-  Lemon p;
-  p.set_multilevel_parameters(0, 1, -3, 5);
-  EXPECT_EQ(p.coarsest_nodes(), 1u);
-  EXPECT_EQ(p.cluster_size(), 2u);
-  EXPECT_EQ(p.band_radius(), 0);
-  EXPECT_EQ(p.max_refinements(), 5u);
-  p.set_max_flow_budget(-1.);
-  EXPECT_EQ(p.max_flow_budget(), -1.);
-  EXPECT_EQ(l.descent_steps(), 1000u);
-  EXPECT_EQ(l.finest_band_radius(), 8);
-  EXPECT_EQ(l.band_radius(), 3);
-  EXPECT_EQ(l.coarsest_nodes(), 2000u);
-  EXPECT_EQ(l.cluster_size(), 16u);
-  p.set_descent_steps(0);
-  EXPECT_EQ(p.descent_steps(), 0u);
-  p.set_finest_band_radius(-2);
-  EXPECT_EQ(p.finest_band_radius(), 0);
-  EXPECT_TRUE(l.concurrent_max_flows());
-  EXPECT_EQ(l.concurrent_max_flow_nodes(), 500000u);
-  p.set_concurrent_max_flows(false, 7);
-  EXPECT_FALSE(p.concurrent_max_flows());
-  EXPECT_EQ(p.concurrent_max_flow_nodes(), 7u);
-  EXPECT_EQ(l.narrow_curve_band_nodes(), 1000000u);
-  p.set_narrow_curve_bands(0);
-  EXPECT_EQ(p.narrow_curve_band_nodes(), 0u);
-  EXPECT_EQ(l.split_band_nodes(), 5000u);
-  p.set_split_bands(0);
-  EXPECT_EQ(p.split_band_nodes(), 0u);
-  EXPECT_EQ(l.carried_flow_routing_nodes(), 100000u);
-  p.set_carried_flow_routing(0);
-  EXPECT_EQ(p.carried_flow_routing_nodes(), 0u);
+  // the documented defaults; sizes below their minimum are raised to it
+  EXPECT_EQ(l.options().descent_steps, 1000u);
+  EXPECT_EQ(l.options().finest_band_radius, 8);
+  EXPECT_EQ(l.options().band_radius, 3);
+  EXPECT_EQ(l.options().coarsest_nodes, 2000u);
+  EXPECT_EQ(l.options().cluster_size, 16u);
+  EXPECT_EQ(l.options().max_refinements, 16u);
+  EXPECT_EQ(l.options().max_flow_budget, 200.);
+  EXPECT_EQ(l.options().split_band_nodes, 5000u);
+  EXPECT_EQ(l.options().narrow_curve_band_nodes, 1000000u);
+  Options o;
+  o.coarsest_nodes = 0;
+  o.cluster_size = 1;
+  o.band_radius = -3;
+  o.finest_band_radius = -2;
+  o.max_flow_budget = -1.;
+  Lemon p(o);
+  EXPECT_EQ(p.options().coarsest_nodes, 1u);
+  EXPECT_EQ(p.options().cluster_size, 2u);
+  EXPECT_EQ(p.options().band_radius, 0);
+  EXPECT_EQ(p.options().finest_band_radius, 0);
+  EXPECT_EQ(p.options().max_flow_budget, -1.);
+  // a sequential solve leaves the options as they were
+  ASSERT_TRUE(l.solve_residual(rp.P, sigma, false)) << l.error();
+  EXPECT_TRUE(l.options().concurrent);
 }
 
 TEST(LemonResidual, RandomClosedProblemsMatchGLPK)
@@ -385,8 +388,7 @@ TEST(LemonResidual, AllAlgorithmsAgree)
     std::vector<double> objectives;
     for(Lemon::Algorithm a : all_algorithms)
     {
-      Lemon lemon(a);
-      lemon.set_fallback(false);
+      Lemon lemon(with_algorithm(a));
       std::vector<double> sigma;
       ASSERT_TRUE(lemon.solve_residual(rp.P, sigma)) << lemon.error();
       EXPECT_EQ(lemon.statistics().algorithm, a);
@@ -411,14 +413,13 @@ TEST(LemonResidual, MultilevelHierarchyMatchesGLPK)
     {
       const bool closed = seed % 4 != 0;
       const Random_problem rp = random_problem(300 + seed, closed, closed ? 10. : 100., seed % 3 == 0);
-      Lemon lemon;
-      make_deep(lemon, 8, descent);
+      Lemon lemon(deep_options(8, descent));
       expect_solver_matches_glpk(lemon, rp.P, "multilevel, descent " + std::to_string(descent) + ", seed " + std::to_string(seed));
       const Lemon::Statistics& st = lemon.statistics();
       if(descent == 0) EXPECT_EQ(st.descent_steps, 0u);
       if(!st.fallback)
       {
-        EXPECT_EQ(st.algorithm, Lemon::MULTILEVEL);
+        EXPECT_EQ(st.algorithm, Options::MULTILEVEL);
         EXPECT_GE(st.levels, 3u) << "seed " << seed;
         EXPECT_LT(st.largest_band, rp.P.number_of_faces + 3) << "seed " << seed;
         deep += st.levels >= 3;
@@ -448,9 +449,7 @@ TEST(LemonResidual, DescentStepsReachTheOptimumWithoutBands)
   {
     const bool closed = seed % 4 != 0;
     const Random_problem rp = random_problem(600 + seed, closed, closed ? 10. : 100., seed % 3 == 0);
-    Lemon without, with;
-    make_deep(without, 0, 0);
-    make_deep(with, 0, 1000);
+    Lemon without(deep_options(0, 0)), with(deep_options(0, 1000));
     expect_solver_matches_glpk(without, rp.P, "no refinement, no descent, seed " + std::to_string(seed));
     expect_solver_matches_glpk(with, rp.P, "no refinement, descent, seed " + std::to_string(seed));
     EXPECT_EQ(with.statistics().refinements, 0u);
@@ -499,7 +498,7 @@ TEST(LemonResidual, SymmetricTorusWithALongGapIsCertifiedByDescentSteps)
   ASSERT_TRUE(SWN::add_vertex_polyline_to_chain(m, loop, chain));
   std::map<Mesh::Face_index, int> labels;
   Lemon lemon;
-  EXPECT_GE(lemon.descent_steps(), 200u);
+  EXPECT_GE(lemon.options().descent_steps, 200u);
   SWN::Solve_report report;
   ASSERT_TRUE(CGAL::surface_winding_numbers(m, chain, boost::make_assoc_property_map(labels),
                                             SWN::parameters::lp_solver(std::ref(lemon), SWN::parameters::report(std::ref(report)))))
@@ -525,9 +524,9 @@ TEST(LemonResidual, MultilevelMaxFlowAlgorithmsAgree)
     const Random_problem rp = random_problem(500 + seed, closed, closed ? 10. : 100., seed % 3 == 0);
     for(double budget : {-1., 0., 0.5, 200.})
     {
-      Lemon lemon;
-      make_deep(lemon);
-      lemon.set_max_flow_budget(budget);
+      Options o = deep_options();
+      o.max_flow_budget = budget;
+      Lemon lemon(o);
       expect_solver_matches_glpk(lemon, rp.P, "max-flow budget " + std::to_string(budget) + ", seed " + std::to_string(seed));
       const Lemon::Statistics& st = lemon.statistics();
       EXPECT_GT(st.certificates, 0u);
@@ -538,8 +537,7 @@ TEST(LemonResidual, MultilevelMaxFlowAlgorithmsAgree)
   EXPECT_GT(handed_over, 0u);   // the tiny budget did hand flows over to Boykov-Kolmogorov
 }
 
-// Racing push-relabel against Boykov-Kolmogorov on two threads changes which maximum flow a
-// certificate ends with, not the shifts: the race on every level, Boykov-Kolmogorov alone,
+// Which maximum flow a certificate ends with does not change the shifts: Boykov-Kolmogorov alone,
 // push-relabel alone and the default hand-over give the same sigma, to the last bit, on instances
 // whose certificates are refused (descent steps taken). (Where optima tie, the same shifts rest on
 // the barrier rule of mark_barrier(), the same set for every maximum flow; these instances did not
@@ -552,17 +550,13 @@ TEST(LemonResidual, MaximumFlowAlgorithmsLeaveTheSameShifts)
     const bool closed = seed % 4 != 0;
     const Random_problem rp = random_problem(600 + seed, closed, closed ? 10. : 100., seed % 3 == 0);
     std::vector<double> reference;
-    struct Setting { const char* name; bool race; double budget; };
-    for(const Setting& setting : {Setting{"sequential, default budget", false, 200.},
-                                  Setting{"race on every level", true, 200.},
-                                  Setting{"Boykov-Kolmogorov alone", false, 0.},
-                                  Setting{"push-relabel alone", false, -1.},
-                                  Setting{"tiny budget", false, 0.5}})
+    struct Setting { const char* name; double budget; };
+    for(const Setting& setting : {Setting{"default budget", 200.}, Setting{"Boykov-Kolmogorov alone", 0.},
+                                  Setting{"push-relabel alone", -1.}, Setting{"tiny budget", 0.5}})
     {
-      Lemon lemon;
-      make_deep(lemon);
-      lemon.set_max_flow_budget(setting.budget);
-      lemon.set_concurrent_max_flows(setting.race, 0);
+      Options o = deep_options();
+      o.max_flow_budget = setting.budget;
+      Lemon lemon(o);
       std::vector<double> sigma;
       ASSERT_TRUE(lemon.solve_residual(rp.P, sigma)) << lemon.error();
       EXPECT_TRUE(lemon.statistics().certified) << setting.name << ", seed " << seed;
@@ -576,36 +570,6 @@ TEST(LemonResidual, MaximumFlowAlgorithmsLeaveTheSameShifts)
     }
   }
   EXPECT_GT(descents, 0u);   // the instances do refuse certificates
-}
-
-// Both maximum flows stop when asked from another thread: push-relabel returns STOPPED with a valid
-// preflow, Boykov-Kolmogorov throws Max_flow_stopped; with the flag down they run to the end.
-TEST(LemonResidual, MaximumFlowsStopWhenAsked)
-{
-  typedef long long Int;
-  const std::size_t n = 200;
-  SI::Warm_push_relabel<Int> pr(n), pr_free(n);
-  SI::Boykov_kolmogorov_flow<Int> bk(n), bk_free(n);
-  for(std::size_t v = 0; v + 1 < n; ++v)   // a path, excess at one end, deficit at the other
-  {
-    pr.add_arc(v, v + 1, 5, 5); pr_free.add_arc(v, v + 1, 5, 5);
-    bk.add_arc(v, v + 1, 5, 5); bk_free.add_arc(v, v + 1, 5, 5);
-  }
-  pr.set_terminal(0, 3); pr.set_terminal(n - 1, -3);
-  pr_free.set_terminal(0, 3); pr_free.set_terminal(n - 1, -3);
-  bk.set_terminal(0, 3); bk.set_terminal(n - 1, -3);
-  bk_free.set_terminal(0, 3); bk_free.set_terminal(n - 1, -3);
-  const std::atomic<bool> raised(true), lowered(false);
-  EXPECT_EQ(pr.run((std::numeric_limits<std::size_t>::max)(), &raised), SI::Warm_push_relabel<Int>::STOPPED);
-  for(std::size_t i = 0; i + 1 < n; ++i) EXPECT_EQ(pr.flow(i), 0);   // stopped before the first push
-  EXPECT_THROW(bk.run(&raised), SI::Max_flow_stopped);
-  EXPECT_EQ(pr_free.run((std::numeric_limits<std::size_t>::max)(), &lowered), SI::Warm_push_relabel<Int>::BALANCED);
-  EXPECT_TRUE(bk_free.run(&lowered));
-  for(std::size_t i = 0; i + 1 < n; ++i)
-  {
-    EXPECT_EQ(pr_free.flow(i), 3);
-    EXPECT_EQ(bk_free.flow(i), 3);
-  }
 }
 
 // The certificates of a level reuse their maximum flows: the graph is built by the first run and
@@ -793,15 +757,17 @@ TEST(LemonResidual, MultilevelFallsBackToNetworkSimplex)
   for(unsigned seed = 1; seed <= 16; ++seed)
   {
     const Random_problem rp = random_problem(400 + seed, true, 10., false);
-    Lemon lemon;
-    make_deep(lemon, 0, 0);
-    lemon.set_multilevel_parameters(6, 8, 0, 0);   // coarse clusters, no band beyond the jumps, no descent
-    lemon.set_finest_band_radius(0);
+    Options o = deep_options(0, 0);
+    o.coarsest_nodes = 6;   // coarse clusters, no band beyond the jumps, no descent
+    o.cluster_size = 8;
+    o.band_radius = 0;
+    o.finest_band_radius = 0;
+    Lemon lemon(o);
     expect_solver_matches_glpk(lemon, rp.P, "multilevel without refinement, seed " + std::to_string(seed));
     if(lemon.statistics().fallback)
     {
       ++fallbacks;
-      EXPECT_EQ(lemon.statistics().algorithm, Lemon::NETWORK_SIMPLEX);
+      EXPECT_EQ(lemon.statistics().algorithm, Options::NETWORK_SIMPLEX);
     }
   }
   EXPECT_GT(fallbacks, 0u);
@@ -827,16 +793,16 @@ TEST(LemonResidual, BoundsWithMultiplicityAndInfiniteBounds)
       const double J3 = std::min(std::max(period, P.lower[3]), P.upper[3]);
       const double expected = 0.01 * std::abs(J3) + std::abs(period - J3);
       // (LEMON 1.3.1's CostScaling AUGMENT and PARTIAL_AUGMENT loop forever on some of these)
-      for(Lemon::Algorithm a : {Lemon::NETWORK_SIMPLEX, Lemon::COST_SCALING_PUSH})
+      for(Lemon::Algorithm a : all_algorithms)
       {
-        Lemon lemon(a);
+        Lemon lemon(with_algorithm(a));
         std::vector<double> sigma;
         ASSERT_TRUE(lemon.solve_residual(P, sigma)) << lemon.error();
         EXPECT_NEAR(P.objective(sigma), expected, 1e-11) << "G " << G << " period " << period;
         EXPECT_LE(P.max_violation(sigma), 1e-12);
         EXPECT_EQ(sigma[2], 0.);
       }
-      expect_matches_glpk(P, Lemon::NETWORK_SIMPLEX, "cycle");
+      expect_matches_glpk(P, Options::NETWORK_SIMPLEX, "cycle");
     }
 }
 
@@ -867,7 +833,7 @@ TEST(LemonResidual, OneSidedBoundsAndZeroCosts)
     std::vector<double> sigma;
     const bool ok = lemon.solve_residual(rp.P, sigma);
     EXPECT_EQ(ok, feasible) << lemon.error();
-    if(feasible) expect_matches_glpk(rp.P, Lemon::COST_SCALING_PUSH, "one-sided bounds " + std::to_string(rep));
+    if(feasible) expect_matches_glpk(rp.P, Options::MULTILEVEL, "one-sided bounds " + std::to_string(rep));
   }
 }
 
@@ -894,7 +860,7 @@ TEST(LemonResidual, FixedArcsAreContracted)
     ASSERT_TRUE(lemon.solve_residual(P, sigma)) << lemon.error();
     EXPECT_EQ(lemon.statistics().fixed_arcs, fixed);
     EXPECT_EQ(lemon.statistics().nodes, P.number_of_faces - fixed);
-    expect_matches_glpk(P, Lemon::COST_SCALING_PUSH, "fixed arcs, seed " + std::to_string(seed));
+    expect_matches_glpk(P, Options::MULTILEVEL, "fixed arcs, seed " + std::to_string(seed));
   }
 }
 
@@ -948,7 +914,7 @@ TEST(LemonResidual, InfeasibleProblemFailsWithAReason)
   P.gauge_faces = {0};
   for(Lemon::Algorithm a : all_algorithms)
   {
-    Lemon lemon(a);
+    Lemon lemon(with_algorithm(a));
     std::vector<double> sigma;
     EXPECT_FALSE(lemon.solve_residual(P, sigma));
     EXPECT_NE(lemon.error().find("infeasible"), std::string::npos) << lemon.error();
@@ -1027,10 +993,9 @@ TEST(LemonResidual, PipelineInstancesMatchGLPK)
     const SWN::Residual_problem P = two_tori_problem();
     EXPECT_EQ(P.gauge_faces.size(), 2u);
     double o = 0;
-    expect_matches_glpk(P, Lemon::COST_SCALING_PUSH, "two tori", &o);
+    expect_matches_glpk(P, Options::MULTILEVEL, "two tori", &o);
     EXPECT_GT(o, 0.);
-    Lemon lemon;
-    make_deep(lemon);
+    Lemon lemon(deep_options());
     double o2 = 0;
     expect_solver_matches_glpk(lemon, P, "two tori, multilevel", &o2);
     EXPECT_NEAR(o2, o, 1e-9 * (1 + o));
@@ -1045,7 +1010,7 @@ TEST(LemonResidual, PipelineInstancesMatchGLPK)
 TEST(LemonResidual, MultilevelParametersChangeTheTimeNotTheOptimum)
 {
   const SWN::Residual_problem P = two_tori_problem();
-  Lemon reference(Lemon::NETWORK_SIMPLEX);
+  Lemon reference(with_algorithm(Options::NETWORK_SIMPLEX));
   std::vector<double> sigma;
   ASSERT_TRUE(reference.solve_residual(P, sigma)) << reference.error();
   const double o = P.objective(sigma);
@@ -1053,26 +1018,27 @@ TEST(LemonResidual, MultilevelParametersChangeTheTimeNotTheOptimum)
   struct Setting { std::size_t coarsest, cluster; int radius; };
   const Setting settings[] = {{12, 2, 0}, {12, 4, 1}, {12, 16, 6}, {12, 64, 2}, {50, 16, 0}, {2000, 16, 6}};
   std::set<std::size_t> depths;
-  std::size_t refined = 0, descended = 0, narrower = 0, split = 0, routed = 0;
+  std::size_t refined = 0, descended = 0, narrower = 0, split = 0;
   std::size_t wide_band = 0;
   for(const Setting& s : settings)
     for(std::size_t descent : {std::size_t(0), std::size_t(30)})
       for(std::size_t narrow : {std::size_t(0), std::size_t(1000000)})   // off, on (the default)
         for(std::size_t halves : {std::size_t(0), std::size_t(40)})        // first bands in halves: never, from 40 nodes
     {
-      // the carried-down flows routed inside the coarser regions on every level, or on none
-      const std::size_t routing = halves == 0 ? 0 : std::size_t(-1);
       const std::string what = "coarsest " + std::to_string(s.coarsest) + ", clusters of " + std::to_string(s.cluster) +
                                ", radius " + std::to_string(s.radius) + ", descent steps " + std::to_string(descent) +
                                ", narrow curve bands up to " + std::to_string(narrow) + " nodes, bands in halves from " +
-                               std::to_string(halves) + " nodes, flows routed from " + std::to_string(routing) + " nodes";
-      Lemon lemon(Lemon::MULTILEVEL);
-      lemon.set_multilevel_parameters(s.coarsest, s.cluster, s.radius, 16);
-      lemon.set_finest_band_radius(2 * s.radius);
-      lemon.set_descent_steps(descent);
-      lemon.set_narrow_curve_bands(narrow);
-      lemon.set_split_bands(halves);
-      lemon.set_carried_flow_routing(routing);
+                               std::to_string(halves) + " nodes";
+      Options opt;
+      opt.coarsest_nodes = s.coarsest;
+      opt.cluster_size = s.cluster;
+      opt.band_radius = s.radius;
+      opt.finest_band_radius = 2 * s.radius;
+      opt.descent_steps = descent;
+      opt.narrow_curve_band_nodes = narrow;
+      opt.split_band_nodes = halves;
+      opt.concurrent = descent == 0;   // the halves on two threads or on one
+      Lemon lemon(opt);
       ASSERT_TRUE(lemon.solve_residual(P, sigma)) << what << ": " << lemon.error();
       EXPECT_LE(P.max_violation(sigma), 1e-9) << what;
       EXPECT_NEAR(P.objective(sigma), o, 1e-9 * (1 + o)) << what;
@@ -1086,8 +1052,6 @@ TEST(LemonResidual, MultilevelParametersChangeTheTimeNotTheOptimum)
         else narrower += lemon.statistics().largest_band < wide_band;
       }
       split += lemon.statistics().split_bands > 0;
-      if(routing != 0) EXPECT_EQ(lemon.statistics().routed_levels, 0u) << what;
-      routed += lemon.statistics().routed_levels > 0;
       refined += lemon.statistics().refinements > 0;
       descended += lemon.statistics().descent_steps > 0;
     }
@@ -1096,7 +1060,6 @@ TEST(LemonResidual, MultilevelParametersChangeTheTimeNotTheOptimum)
   EXPECT_GE(descended, 2u);       // and some after descent steps along them
   EXPECT_GE(narrower, 2u);        // narrow curve bands did shrink the largest band
   EXPECT_GE(split, 4u);           // and bands were solved in halves (then certified all the same)
-  EXPECT_GE(routed, 4u);          // and carried-down flows were routed inside the coarser regions
   EXPECT_EQ(*depths.begin(), 1u);   // coarsest 2000: the problem is its own coarsest level
 }
 

@@ -16,6 +16,7 @@
 #endif
 
 #include <CGAL/Default.h>
+#include <CGAL/tags.h>
 #include <CGAL/Dynamic_property_map.h>
 #include <CGAL/Eigen_solver_traits.h>
 #ifdef CGAL_SWN_USE_CHOLMOD
@@ -59,6 +60,15 @@ struct No_linear_program_traits
                          "build with GLPK (CGAL_USE_GLPK) or pass one with lp_solver(std::ref(lp))");
   }
 };
+
+// the value of the named parameter `concurrency`: a tag or a Boolean
+template <class T>
+bool allows_threads(const T& concurrency)
+{
+  if constexpr(std::is_same<T, CGAL::Sequential_tag>::value) return false;
+  else if constexpr(std::is_same<T, CGAL::Parallel_tag>::value) return true;
+  else return static_cast<bool>(concurrency);
+}
 
 #if defined(CGAL_SWN_USE_LEMON)
 typedef LEMON_residual_solver Default_linear_program_traits;
@@ -259,7 +269,7 @@ public:
   \param label_map receives the winding number label W of every face
   \param np optional named parameters among `nonbounding_chain_map`, `nonbounding_chain_real_map`,
          `bounding_chain_map`, `winding_number_map`, `epsilon`, `lp_solver`, `use_reduced_residual`,
-         `concurrent_factorizations`, `keep_hodge_factorization`, `report`, `verbose`
+         `concurrency`, `keep_hodge_factorization`, `report`, `verbose`
          (see `CGAL::surface_winding_numbers()`).
   \returns `true` on success. On failure no output map is written and `report().error` says why.
   */
@@ -284,7 +294,8 @@ public:
       options.epsilon = choose_parameter(get_parameter(np, snp::epsilon), 0.01);
       options.verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
       options.reduced_residual = choose_parameter(get_parameter(np, snp::use_reduced_residual), false);
-      options.concurrent_factorizations = choose_parameter(get_parameter(np, snp::concurrent_factorizations), true);
+      options.concurrent =
+        internal::allows_threads(choose_parameter(get_parameter(np, snp::concurrency), CGAL::Parallel_tag()));
       options.keep_hodge_factorization = choose_parameter(get_parameter(np, snp::keep_hodge_factorization), true);
 
       std::vector<double> chain(core_->tables().ne, 0.);

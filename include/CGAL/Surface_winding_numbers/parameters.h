@@ -18,7 +18,7 @@ enum winding_number_map_t { winding_number_map };
 enum epsilon_t { epsilon };
 enum lp_solver_t { lp_solver };
 enum use_reduced_residual_t { use_reduced_residual };
-enum concurrent_factorizations_t { concurrent_factorizations };
+enum concurrency_t { concurrency };
 enum keep_hodge_factorization_t { keep_hodge_factorization };
 enum report_t { report };
 } // namespace internal_np
@@ -72,12 +72,13 @@ CGAL_SWN_NAMED_PARAMETER(lp_solver_t, lp_solver)
 /// `true`: approximate the residual function by the reduced problem of the paper's Sec. 6 (gaps
 /// closed by shortest paths, one shift per region); default `false` (the exact Eq. 11)
 CGAL_SWN_NAMED_PARAMETER(use_reduced_residual_t, use_reduced_residual)
-/// `true` (the default, where `CGAL_HAS_THREADS` is defined): when the Hodge projection is needed, its
-/// per-mesh part (the harmonic basis, or the 2-form Laplacian's factorization beyond 24 homology
-/// classes) is computed on a second thread while the first jump-Laplace system is factorized; `false`:
-/// one after the other, on the calling thread. Same results either way (see
-/// `use_single_threaded_openblas()` for OpenBLAS)
-CGAL_SWN_NAMED_PARAMETER(concurrent_factorizations_t, concurrent_factorizations)
+/// `CGAL::Sequential_tag()` or `false`: the whole solve runs on the calling thread; `CGAL::Parallel_tag()`
+/// or `true` (the default): the package may start one more thread, for the
+/// Hodge projection's per-mesh part during the first jump-Laplace solve and for the halves of large
+/// bands in `LEMON_residual_solver`. The one switch for every thread the package starts; same results
+/// either way. (`CGAL::Parallel_if_available_tag` is whichever of the two CGAL makes it; the package's
+/// threads are `std::thread`s and need no TBB.)
+CGAL_SWN_NAMED_PARAMETER(concurrency_t, concurrency)
 /// `true` (the default of `Surface_winding_numbers_solver::solve()`): the per-mesh part of the Hodge
 /// projection (the harmonic basis, or the factorized 2-form Laplacian) and the factorized 0-form Laplacian
 /// (the jump Laplacian of every curve without interior endpoints) are kept for the next solve on the same

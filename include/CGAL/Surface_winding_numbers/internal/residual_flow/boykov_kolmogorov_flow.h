@@ -1,14 +1,14 @@
 // Copyright (c) 2026 The CGAL Surface Winding Numbers project.
 // SPDX-License-Identifier: MIT
 
-#ifndef CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_BOYKOV_KOLMOGOROV_FLOW_H
-#define CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_BOYKOV_KOLMOGOROV_FLOW_H
+#ifndef CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_RESIDUAL_FLOW_BOYKOV_KOLMOGOROV_FLOW_H
+#define CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_RESIDUAL_FLOW_BOYKOV_KOLMOGOROV_FLOW_H
 
 #include <boost/graph/boykov_kolmogorov_max_flow.hpp>
 #include <boost/graph/compressed_sparse_row_graph.hpp>
 #include <boost/property_map/property_map.hpp>
+#include <boost/range/iterator_range.hpp>
 
-#include <atomic>
 #include <cstddef>
 #include <utility>
 #include <vector>
@@ -17,15 +17,9 @@ namespace CGAL {
 namespace Surface_winding_numbers {
 namespace internal {
 
-// thrown out of Boykov_kolmogorov_flow::run() when its stop flag is raised
-struct Max_flow_stopped {};
-
 // Boost.Graph's Boykov-Kolmogorov maximum flow behind the interface of Warm_push_relabel: arcs with
 // residual capacities both ways, a signed terminal capacity per node (> 0: from the source, < 0: to
 // the sink), run(), the flow of each arc and the source side of a minimum cut.
-// run() can be stopped from another thread: Boost's algorithm reads every residual capacity through
-// a property map, and ours checks a flag first and throws Max_flow_stopped when it is raised (the
-// algorithm's state lives in local containers, which the exception unwinds).
 // The graph is a compressed sparse row graph with its edge data in flat arrays: with an
 // adjacency_list, every edge's properties were a heap block of their own, and on the 1.15M-face
 // certificate of benchmark/residual_solvers.md the flow spent most of its time missing the cache.
@@ -36,24 +30,6 @@ class Boykov_kolmogorov_flow
                                              boost::no_property, std::size_t, std::size_t> Graph;
   typedef typename boost::graph_traits<Graph>::edge_descriptor Edge;
   typedef typename boost::property_map<Graph, boost::edge_index_t>::const_type Edge_index;
-
-  // the residual capacities, read and written by Boost's algorithm; every read checks the stop flag
-  struct Stoppable_residual_map
-  {
-    typedef Edge key_type;
-    typedef Int value_type;
-    typedef Int& reference;
-    typedef boost::read_write_property_map_tag category;
-    Int* residual;
-    Edge_index index;
-    const std::atomic<bool>* stop;
-    friend Int get(const Stoppable_residual_map& m, const Edge& e)
-    {
-      if(m.stop->load(std::memory_order_relaxed)) throw Max_flow_stopped();
-      return m.residual[get(m.index, e)];
-    }
-    friend void put(const Stoppable_residual_map& m, const Edge& e, Int value) { m.residual[get(m.index, e)] = value; }
-  };
 
 public:
   // n nodes (the source and the sink are two more)
@@ -76,13 +52,11 @@ public:
   // terminal capacity of v: t > 0 from the source to v, t < 0 from v to the sink
   void set_terminal(std::size_t v, Int t) { terminal_[v] = t; }
 
-  // runs the maximum flow; true if it uses up every capacity from the source. If `stop` is given and
-  // becomes true while it runs, it throws Max_flow_stopped (the flow is then lost). Every node has an
+  // runs the maximum flow; true if it uses up every capacity from the source. Every node has an
   // arc from the source and one to the sink (capacity 0 where its terminal capacity has the other
   // sign), so that the graph, built by the first run, serves every later one.
-  bool run(const std::atomic<bool>* stop = nullptr)
+  bool run()
   {
-    static const std::atomic<bool> never(false);
     if(!built_) build();
     const std::size_t nh = position_.size(), nv = n_ + 2;
     for(std::size_t v = 0; v < n_; ++v)
@@ -99,7 +73,7 @@ public:
     const auto vertex_index = get(boost::vertex_index, graph_);
     value_ = boost::boykov_kolmogorov_max_flow(
       graph_, boost::make_iterator_property_map(capacity_.begin(), edge_index),
-      Stoppable_residual_map{residual_.data(), edge_index, stop != nullptr ? stop : &never},
+      boost::make_iterator_property_map(residual_.begin(), edge_index),
       boost::make_iterator_property_map(reverse_.begin(), edge_index),
       boost::make_iterator_property_map(predecessor_.begin(), vertex_index),
       boost::make_iterator_property_map(color_.begin(), vertex_index),
@@ -178,4 +152,4 @@ private:
 } // namespace Surface_winding_numbers
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_BOYKOV_KOLMOGOROV_FLOW_H
+#endif // CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_RESIDUAL_FLOW_BOYKOV_KOLMOGOROV_FLOW_H

@@ -1,11 +1,10 @@
 // Copyright (c) 2026 The CGAL Surface Winding Numbers project.
 // SPDX-License-Identifier: MIT
 
-#ifndef CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_WARM_PUSH_RELABEL_H
-#define CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_WARM_PUSH_RELABEL_H
+#ifndef CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_RESIDUAL_FLOW_WARM_PUSH_RELABEL_H
+#define CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_RESIDUAL_FLOW_WARM_PUSH_RELABEL_H
 
 #include <algorithm>
-#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -15,16 +14,6 @@
 namespace CGAL {
 namespace Surface_winding_numbers {
 namespace internal {
-
-// asks the processor to fetch the cache line of p (a hint, no effect on the results)
-inline void prefetch(const void* p)
-{
-#if defined(__GNUC__) || defined(__clang__)
-  __builtin_prefetch(p);
-#else
-  (void)p;
-#endif
-}
 
 // Balancing a nearly balanced flow: every node carries a signed imbalance b (> 0: an excess it
 // must send on, < 0: a deficit it can absorb), and the excesses are pushed along residual arcs to
@@ -77,15 +66,13 @@ public:
   // imbalance of v: t > 0 an excess, t < 0 a deficit
   void set_terminal(std::size_t v, Int t) { b_[v] = t; }
 
-  enum Outcome { BALANCED, CUT, OVER_BUDGET, STOPPED };
+  enum Outcome { BALANCED, CUT, OVER_BUDGET };
 
   // pushes until every excess is absorbed (BALANCED), or no excess can reach a deficit any more
   // (CUT: source_side() is a minimum cut), or more than `work_limit` arcs were scanned
   // (OVER_BUDGET: flow() holds the progress made, a valid preflow); global relabelings count as
-  // one scan of every node and arc. If `stop` is given, it is read before every discharge: once it
-  // is true, run() returns STOPPED (flow() is then a valid preflow too).
-  Outcome run(std::size_t work_limit = (std::numeric_limits<std::size_t>::max)(),
-              const std::atomic<bool>* stop = nullptr)
+  // one scan of every node and arc.
+  Outcome run(std::size_t work_limit = (std::numeric_limits<std::size_t>::max)())
   {
     build();
     const Index dead = Index(n_);
@@ -105,7 +92,6 @@ public:
     std::size_t work = 0, total = 0;
     while(highest_ != NONE)
     {
-      if(stop != nullptr && stop->load(std::memory_order_relaxed)) return STOPPED;
       const Index v = bucket_[highest_];
       if(v == NONE) { highest_ = highest_ == 0 ? NONE : highest_ - 1; continue; }
       bucket_[highest_] = next_[v];
@@ -235,32 +221,8 @@ private:
     queue_.clear();
     for(std::size_t v = 0; v < n_; ++v)
       if(b_[v] < 0) { label_[v] = 0; queue_.push_back(Index(v)); }
-    // the search is bound by memory latency on large graphs (each node of the queue, its arcs and
-    // its neighbours' labels and reverse arcs lie anywhere): the nodes a few places ahead in the
-    // queue are fetched in three stages, so that their data is in cache when their turn comes
-    // (first certificate of a level of 1.15M nodes: push-relabel 4.1-4.6 -> 3.0-3.2 s with 8 places
-    // and the first line of the arcs; 16 places and both ends of the arcs, 7 % less again)
-    constexpr std::size_t ahead = 16;
     for(std::size_t h = 0; h < queue_.size(); ++h)
     {
-      const std::size_t queued = queue_.size();
-      if(h + 3 * ahead < queued) prefetch(first_.data() + queue_[h + 3 * ahead]);
-      if(h + 2 * ahead < queued)
-      {
-        // a node's arcs may straddle two cache lines (a hint only: one past the end is harmless)
-        const Index a = queue_[h + 2 * ahead];
-        prefetch(half_.data() + first_[a]);
-        prefetch(half_.data() + first_[a + 1] - (first_[a + 1] > first_[a] ? 1 : 0));
-      }
-      if(h + ahead < queued)
-      {
-        const Index a = queue_[h + ahead];
-        for(Index k = first_[a]; k < first_[a + 1]; ++k)
-        {
-          prefetch(label_.data() + half_[k].head);
-          prefetch(half_.data() + half_[k].rev);
-        }
-      }
       const Index w = queue_[h];
       for(Index k = first_[w]; k < first_[w + 1]; ++k)
       {
@@ -347,4 +309,4 @@ private:
 } // namespace Surface_winding_numbers
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_WARM_PUSH_RELABEL_H
+#endif // CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_RESIDUAL_FLOW_WARM_PUSH_RELABEL_H
