@@ -98,7 +98,7 @@ connected component, the label covering the largest area is 0.
   \cgalParamNBegin{Surface_winding_numbers::parameters::lp_solver}
     \cgalParamDescription{the solver of the residual problem (Eq. 11), passed with `std::ref()`: either a direct residual solver, or the traits of a general linear program solver to which the problem is given as a linear program}
     \cgalParamType{a model of `SurfaceWindingNumbersResidualSolver` or of `SurfaceWindingNumbersLPTraits`}
-    \cgalParamDefault{`CGAL::Surface_winding_numbers::GLPK_linear_program_traits`}
+    \cgalParamDefault{`CGAL::Surface_winding_numbers::LEMON_residual_solver` when the package is built with LEMON (`CGAL_SWN_USE_LEMON`), otherwise `CGAL::Surface_winding_numbers::GLPK_linear_program_traits` (`CGAL_USE_GLPK`)}
     \cgalParamExtra{only used when a component of the mesh is neither a disk nor a sphere}
   \cgalParamNEnd
   \cgalParamNBegin{Surface_winding_numbers::parameters::use_reduced_residual}
