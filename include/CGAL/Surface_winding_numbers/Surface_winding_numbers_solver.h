@@ -57,7 +57,7 @@ struct No_linear_program_traits
   LP_status solve(OutputIterator)
   {
     throw Solver_failure("this surface needs the residual linear program, but no LP solver is available: "
-                         "build with GLPK (CGAL_USE_GLPK) or pass one with lp_solver(std::ref(lp))");
+                         "build with LEMON (CGAL_SWN_USE_LEMON) or GLPK (CGAL_USE_GLPK), or pass one with lp_solver(std::ref(lp))");
   }
 };
 
