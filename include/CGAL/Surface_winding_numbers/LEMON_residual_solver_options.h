@@ -29,10 +29,6 @@ struct LEMON_residual_solver_options
 
   /// the algorithm (default `MULTILEVEL`; `NETWORK_SIMPLEX` is 2-10x slower beyond 30k faces)
   Algorithm algorithm = MULTILEVEL;
-  /// `true` (the default): `MULTILEVEL` solves the two halves of large bands (see `split_band_nodes`)
-  /// on two threads. The named parameter `concurrency` of the package's functions overrides it with
-  /// `false` when it asks for a sequential run.
-  bool concurrent = true;
   /// largest violation of the bounds accepted in the answer (default `1e-9`; raised to
   /// \f$ 2^{1-k} \f$ when the integer scaling exponent `k` is small)
   double feasibility_tolerance = 1e-9;
@@ -63,12 +59,6 @@ struct LEMON_residual_solver_options
   /// (default 200); beyond it Boykov-Kolmogorov finishes the flow. 0: Boykov-Kolmogorov only;
   /// negative: no budget
   double max_flow_budget = 200;
-  /// first bands of at least this many nodes are cut in two halves solved side by side (default
-  /// 5000; 0: never)
-  std::size_t split_band_nodes = 5000;
-  /// on problems of at most this many faces the first bands grow only around the jumps off the
-  /// curve (default 1,000,000; 0: never)
-  std::size_t narrow_curve_band_nodes = 1000000;
   /// @}
 };
 
@@ -96,9 +86,7 @@ struct LEMON_residual_solver_statistics
   std::size_t refinements = 0;         ///< `MULTILEVEL`: bands re-solved around barriers on the finest level
   std::size_t descent_steps = 0;       ///< `MULTILEVEL`: steps along the barriers of refused certificates (every level)
   std::size_t descent_pieces = 0;      ///< `MULTILEVEL`: connected pieces moved by those steps, each by its own line search
-  std::size_t descent_lowerings = 0;   ///< `MULTILEVEL`: steps that lowered pieces of a barrier's complement rather than raising pieces of the barrier
   std::size_t largest_band = 0;        ///< `MULTILEVEL`: nodes of the largest problem given to network simplex
-  std::size_t split_bands = 0;         ///< `MULTILEVEL`: bands solved in two halves
   std::size_t certificates = 0;        ///< `MULTILEVEL`: maximum flows run (every level, every refinement)
   std::size_t max_flow_fallbacks = 0;  ///< `MULTILEVEL`: maximum flows that Boykov-Kolmogorov finished (push-relabel over its budget)
   double objective = 0;                ///< Eq. 11 objective of `sigma`, recomputed with the original data

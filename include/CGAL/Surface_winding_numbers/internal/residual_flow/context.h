@@ -56,7 +56,6 @@ struct Context
     if(options.verbose) std::cerr << "[swn] " << why << "\n";
     return false;
   }
-  bool concurrent() const { return options.concurrent; }
   std::ostream* log() const { return options.verbose ? &std::cerr : nullptr; }
 };
 

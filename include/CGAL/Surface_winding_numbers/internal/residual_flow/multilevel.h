@@ -30,7 +30,8 @@ namespace internal {
 namespace residual_flow {
 
 // steps in a row that repeat the decrease of the step two before: the descent zigzags between two
-// barriers (seen on regular tori with a long gap), and the bands take over
+// barriers (seen on regular tori with a long gap, where 1000 small steps preceded the bands), and the
+// bands take over
 constexpr std::size_t zigzag_steps = 16;
 
 // Certifies level l of the hierarchy: while the certificate is refused, up to descent_steps
@@ -70,7 +71,7 @@ inline bool certify_level(Context& ctx, std::vector<Level>& levels, std::size_t 
     for(const Int_arc& e : lv.arcs)
       if(barrier[e.L] != barrier[e.R]) seed[e.L] = seed[e.R] = 1;
     const std::vector<Int> before = pi;
-    if(!refine(ctx, lv, U, pi, seed, ctx.options.band_radius + int(round), false, false)) return false;
+    if(!refine(ctx, lv, U, pi, seed, ctx.options.band_radius + int(round), false)) return false;
     ++round;
     if(pi == before)   // cannot happen in exact arithmetic: the barrier is a descent direction
       return ctx.fail("a refinement around the barrier of the certificate did not move the shifts");
@@ -95,7 +96,6 @@ inline bool multilevel(Context& ctx, std::size_t n, std::vector<Int_arc> arcs, I
   if(!solve_whole(ctx, levels.back().n, levels.back().arcs, U, pi, levels.back().x)) return false;
   if(levels.size() == 1) return true;   // certified by the duality of network simplex
   normalize(levels.back(), pi);
-  const bool narrow = levels.front().n <= ctx.options.narrow_curve_band_nodes;
   const std::vector<char> no_seed;
   for(std::size_t l = levels.size() - 1; l-- > 0;)
   {
@@ -104,7 +104,7 @@ inline bool multilevel(Context& ctx, std::size_t n, std::vector<Int_arc> arcs, I
     pi.swap(fine);
     prolong_flow(levels[l], levels[l + 1]);
     const int radius = (std::max)(0, l == 0 ? ctx.options.finest_band_radius : ctx.options.band_radius);
-    if(!refine(ctx, levels[l], U, pi, no_seed, radius, true, narrow)) return false;
+    if(!refine(ctx, levels[l], U, pi, no_seed, radius, true)) return false;
     std::vector<Int>().swap(levels[l + 1].x);
     levels[l + 1].workspace.reset();
     // bands around the barriers on the finest level only (on the coarse levels they did not pay)
