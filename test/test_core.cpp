@@ -1,11 +1,11 @@
 // Stage-by-stage tests of the numerical core (flat tables), of the LP traits and of the solver class.
 // One GoogleTest suite per stage (include/CGAL/Surface_winding_numbers/internal/), in pipeline order:
-//   MeshTables (mesh_tables.h), LocalityOrder (locality_order.h), CotanWeights (cotan_weights.h),
-//   JumpLaplace (jump_laplace.h), NestedDissection (nested_dissection.h), Derivatives (derivatives.h),
-//   HarmonicPart (harmonic_part.h), Residual (residual.h), LinearProgramTraits
-//   (GLPK_linear_program_traits.h), WindingNumber (winding_number.h), NonboundingChain
-//   (nonbounding_chain.h), ReducedResidual (reduced_residual.h), Solver (pipeline.h and the solver
-//   class, end to end).
+//   MeshTables (mesh_tables.h), UnionFind (union_find.h), LocalityOrder (locality_order.h),
+//   CotanWeights (cotan_weights.h), JumpLaplace (jump_laplace.h), NestedDissection
+//   (nested_dissection.h), Derivatives (derivatives.h), HarmonicPart (harmonic_part.h), Residual
+//   (residual.h), LinearProgramTraits (GLPK_linear_program_traits.h), WindingNumber
+//   (winding_number.h), NonboundingChain (nonbounding_chain.h), ReducedResidual (reduced_residual.h),
+//   Solver (pipeline.h and the solver class, end to end).
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -396,6 +396,46 @@ TEST(MeshTables, ChainErrorsNameEdgesInTheInputNumbering)
                                std::to_string(std::size_t(source(h, s))) + ", " +
                                std::to_string(std::size_t(target(h, s))) + ") is on the border";
   EXPECT_NE(solver.report().error.find(expected), std::string::npos) << solver.report().error;
+}
+
+// =============================================================================================
+// UnionFind (union_find.h)
+// =============================================================================================
+
+TEST(UnionFind, SetsAreTheConnectedComponentsWithTheirSmallestElementAsRepresentative)
+{
+  // random unions on 100 elements against the components of the same graph found by a
+  // breadth-first search; the representative of every set is its smallest element
+  const std::size_t n = 100;
+  SI::Union_find sets(n);
+  std::vector<std::vector<std::size_t>> adjacent(n);
+  std::mt19937 rng(16);
+  std::uniform_int_distribution<std::size_t> element(0, n - 1);
+  for(int k = 0; k < 70; ++k)
+  {
+    const std::size_t a = element(rng), b = element(rng);
+    sets.unite(a, b);
+    adjacent[a].push_back(b);
+    adjacent[b].push_back(a);
+  }
+  std::vector<std::size_t> smallest(n, SI::npos);
+  for(std::size_t root = 0; root < n; ++root)   // in increasing order: the first one met is the smallest
+  {
+    if(smallest[root] != SI::npos) continue;
+    std::vector<std::size_t> queue(1, root);
+    smallest[root] = root;
+    for(std::size_t q = 0; q < queue.size(); ++q)
+      for(std::size_t x : adjacent[queue[q]])
+        if(smallest[x] == SI::npos) { smallest[x] = root; queue.push_back(x); }
+  }
+  std::size_t singletons = 0, shared = 0;
+  for(std::size_t x = 0; x < n; ++x)
+  {
+    EXPECT_EQ(sets.find(x), smallest[x]) << "element " << x;
+    (smallest[x] == x && adjacent[x].empty() ? singletons : shared) += 1;
+  }
+  EXPECT_GT(singletons, 0u);
+  EXPECT_GT(shared, n / 2);
 }
 
 // =============================================================================================
