@@ -94,6 +94,35 @@ inline void add_quad(Soup& s, Index a, Index b, Index c, Index d, bool diagonal_
   else            { add_triangle(s, a, b, d, centre); add_triangle(s, b, c, d, centre); }
 }
 
+// The random numbers of a generator, from one engine: the jitter, uniform in [-1, 1], and the
+// diagonal of each quad (the order of the draws is part of every generated mesh).
+struct Generator_random
+{
+  explicit Generator_random(unsigned seed) : rng(seed) {}
+  double jitter() { return U(rng); }
+  // the diagonal (a, c) of the next quad: at random, or always
+  bool diagonal_ac(bool random_diagonals) { return random_diagonals ? coin(rng) : true; }
+
+  std::mt19937 rng;
+  std::uniform_real_distribution<double> U{-1., 1.};
+  std::bernoulli_distribution coin{0.5};
+};
+
+// The ni x nj cells of a grid of vertices vid(i, j), each split into two triangles (add_quad, quad
+// (i,j), (i+1,j), (i+1,j+1), (i,j+1), face centre (i + 1/2, j + 1/2)), walked row by row (j outer)
+// or, with i_outer, column by column.
+template <class Vid>
+void add_grid_cells(Soup& s, int ni, int nj, bool i_outer, const Vid& vid, Generator_random& random, bool random_diagonals)
+{
+  for(int a = 0; a < (i_outer ? ni : nj); ++a)
+    for(int b = 0; b < (i_outer ? nj : ni); ++b)
+    {
+      const int i = i_outer ? a : b, j = i_outer ? b : a;
+      add_quad(s, vid(i, j), vid(i + 1, j), vid(i + 1, j + 1), vid(i, j + 1), random.diagonal_ac(random_diagonals),
+               {i + 0.5, j + 0.5});
+    }
+}
+
 // ------------------------------------------------------------------------------------------
 // Disk: unit square, n x n cells, random diagonals, tangential jitter.
 // `jitter` is the maximal displacement per coordinate as a fraction of the cell size; 0.2
@@ -106,26 +135,18 @@ inline Index disk_vid(int n, int i, int j) { return Index(j) * Index(n + 1) + In
 inline Soup make_disk(int n, unsigned seed = 1, double jitter = 0.2, bool random_diagonals = true)
 {
   Soup s;
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> U(-1., 1.);
-  std::bernoulli_distribution coin(0.5);
+  Generator_random random(seed);
   const double h = 1. / n;
   for(int j = 0; j <= n; ++j)
     for(int i = 0; i <= n; ++i)
     {
-      double dx = jitter * U(rng), dy = jitter * U(rng);
+      double dx = jitter * random.jitter(), dy = jitter * random.jitter();
       if(i == 0 || i == n) dx = 0;
       if(j == 0 || j == n) dy = 0;
       s.points.emplace_back((i + dx) * h, (j + dy) * h, 0.);
       s.vparam.push_back({double(i), double(j)});
     }
-  for(int j = 0; j < n; ++j)
-    for(int i = 0; i < n; ++i)
-    {
-      bool d = random_diagonals ? coin(rng) : true;
-      add_quad(s, disk_vid(n, i, j), disk_vid(n, i + 1, j), disk_vid(n, i + 1, j + 1), disk_vid(n, i, j + 1), d,
-               {i + 0.5, j + 0.5});
-    }
+  add_grid_cells(s, n, n, false, [n](int i, int j) { return disk_vid(n, i, j); }, random, random_diagonals);
   return s;
 }
 
@@ -162,24 +183,16 @@ inline Soup make_torus(int nu, int nv, unsigned seed = 1, double jitter = 0.2, b
                        double R = 1.0, double r = 0.4)
 {
   Soup s;
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> U(-1., 1.);
-  std::bernoulli_distribution coin(0.5);
+  Generator_random random(seed);
   for(int j = 0; j < nv; ++j)
     for(int i = 0; i < nu; ++i)
     {
-      const double u = 2 * kPi * (i + jitter * U(rng)) / nu;
-      const double v = 2 * kPi * (j + jitter * U(rng)) / nv;
+      const double u = 2 * kPi * (i + jitter * random.jitter()) / nu;
+      const double v = 2 * kPi * (j + jitter * random.jitter()) / nv;
       s.points.emplace_back((R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v));
       s.vparam.push_back({double(i), double(j)});
     }
-  for(int j = 0; j < nv; ++j)
-    for(int i = 0; i < nu; ++i)
-    {
-      bool d = random_diagonals ? coin(rng) : true;
-      add_quad(s, torus_vid(nu, nv, i, j), torus_vid(nu, nv, i + 1, j), torus_vid(nu, nv, i + 1, j + 1),
-               torus_vid(nu, nv, i, j + 1), d, {i + 0.5, j + 0.5});
-    }
+  add_grid_cells(s, nu, nv, false, [nu, nv](int i, int j) { return torus_vid(nu, nv, i, j); }, random, random_diagonals);
   return s;
 }
 
@@ -221,26 +234,18 @@ inline Soup make_annulus(int nr, int nt, unsigned seed = 1, double jitter = 0.2,
                          double r0 = 0.5, double r1 = 1.0)
 {
   Soup s;
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> U(-1., 1.);
-  std::bernoulli_distribution coin(0.5);
+  Generator_random random(seed);
   for(int k = 0; k <= nr; ++k)
     for(int t = 0; t < nt; ++t)
     {
-      double dk = jitter * U(rng), dt = jitter * U(rng);
+      double dk = jitter * random.jitter(), dt = jitter * random.jitter();
       if(k == 0 || k == nr) dk = 0;
       const double rho = r0 + (r1 - r0) * (k + dk) / nr;
       const double th = 2 * kPi * (t + dt) / nt;
       s.points.emplace_back(rho * std::cos(th), rho * std::sin(th), 0.);
       s.vparam.push_back({double(k), double(t)});
     }
-  for(int k = 0; k < nr; ++k)
-    for(int t = 0; t < nt; ++t)
-    {
-      bool d = random_diagonals ? coin(rng) : true;
-      add_quad(s, annulus_vid(nr, nt, k, t), annulus_vid(nr, nt, k + 1, t), annulus_vid(nr, nt, k + 1, t + 1),
-               annulus_vid(nr, nt, k, t + 1), d, {k + 0.5, t + 0.5});
-    }
+  add_grid_cells(s, nr, nt, true, [nr, nt](int k, int t) { return annulus_vid(nr, nt, k, t); }, random, random_diagonals);
   return s;
 }
 
@@ -286,16 +291,14 @@ inline Index sphere_vid(int nlat, int nlon, int p, int q)
 inline Soup make_uv_sphere(int nlat, int nlon, unsigned seed = 1, double jitter = 0.2, bool random_diagonals = true)
 {
   Soup s;
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> U(-1., 1.);
-  std::bernoulli_distribution coin(0.5);
+  Generator_random random(seed);
   s.points.emplace_back(0., 0., 1.);
   s.vparam.push_back({0., 0.});
   for(int p = 1; p < nlat; ++p)
     for(int q = 0; q < nlon; ++q)
     {
-      const double th = kPi * (p + jitter * U(rng)) / nlat;
-      const double ph = 2 * kPi * (q + jitter * U(rng)) / nlon;
+      const double th = kPi * (p + jitter * random.jitter()) / nlat;
+      const double ph = 2 * kPi * (q + jitter * random.jitter()) / nlon;
       s.points.emplace_back(std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th));
       s.vparam.push_back({double(q), double(p)});
     }
@@ -307,10 +310,10 @@ inline Soup make_uv_sphere(int nlat, int nlon, unsigned seed = 1, double jitter 
   for(int p = 1; p + 1 < nlat; ++p)
     for(int q = 0; q < nlon; ++q)
     {
-      bool d = random_diagonals ? coin(rng) : true;
       // CCW in the (east, north) frame: (p+1,q) -> (p+1,q+1) -> (p,q+1) -> (p,q)
       add_quad(s, sphere_vid(nlat, nlon, p + 1, q), sphere_vid(nlat, nlon, p + 1, q + 1),
-               sphere_vid(nlat, nlon, p, q + 1), sphere_vid(nlat, nlon, p, q), d, {q + 0.5, p + 0.5});
+               sphere_vid(nlat, nlon, p, q + 1), sphere_vid(nlat, nlon, p, q), random.diagonal_ac(random_diagonals),
+               {q + 0.5, p + 0.5});
     }
   for(int q = 0; q < nlon; ++q)
     add_triangle(s, S, sphere_vid(nlat, nlon, nlat - 1, q + 1), sphere_vid(nlat, nlon, nlat - 1, q),
