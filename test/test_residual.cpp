@@ -337,6 +337,7 @@ TEST(LemonResidual, NameAndDefaults)
   EXPECT_EQ(l.options().cluster_size, 16u);
   EXPECT_EQ(l.options().max_refinements, 16u);
   EXPECT_EQ(l.options().max_flow_budget, 200.);
+  EXPECT_EQ(l.options().narrow_curve_band_nodes, 1000000u);
   Options o;
   o.coarsest_nodes = 0;
   o.cluster_size = 1;
@@ -991,7 +992,8 @@ TEST(LemonResidual, PipelineInstancesMatchGLPK)
   }
 }
 
-// The hierarchy's parameters (coarsest size, cluster size, band radius, descent steps) change how the multilevel solver gets there, never where: on a pipeline instance (two tori,
+// The hierarchy's parameters (coarsest size, cluster size, band radius, descent steps, narrow curve
+// bands) change how the multilevel solver gets there, never where: on a pipeline instance (two tori,
 // broken curves) every setting certifies network simplex's optimum, through hierarchies of different
 // depths.
 TEST(LemonResidual, MultilevelParametersChangeTheTimeNotTheOptimum)
@@ -1005,18 +1007,21 @@ TEST(LemonResidual, MultilevelParametersChangeTheTimeNotTheOptimum)
   struct Setting { std::size_t coarsest, cluster; int radius; };
   const Setting settings[] = {{12, 2, 0}, {12, 4, 1}, {12, 16, 6}, {12, 64, 2}, {50, 16, 0}, {2000, 16, 6}};
   std::set<std::size_t> depths;
-  std::size_t refined = 0, descended = 0;
+  std::size_t refined = 0, descended = 0, narrower = 0, wide_band = 0;
   for(const Setting& s : settings)
     for(std::size_t descent : {std::size_t(0), std::size_t(30)})
+      for(std::size_t narrow : {std::size_t(0), std::size_t(1000000)})   // off, on (the default)
     {
       const std::string what = "coarsest " + std::to_string(s.coarsest) + ", clusters of " + std::to_string(s.cluster) +
-                               ", radius " + std::to_string(s.radius) + ", descent steps " + std::to_string(descent);
+                               ", radius " + std::to_string(s.radius) + ", descent steps " + std::to_string(descent) +
+                               ", narrow curve bands up to " + std::to_string(narrow) + " nodes";
       Options opt;
       opt.coarsest_nodes = s.coarsest;
       opt.cluster_size = s.cluster;
       opt.band_radius = s.radius;
       opt.finest_band_radius = 2 * s.radius;
       opt.descent_steps = descent;
+      opt.narrow_curve_band_nodes = narrow;
       Lemon lemon(opt);
       ASSERT_TRUE(lemon.solve_residual(P, sigma)) << what << ": " << lemon.error();
       EXPECT_LE(P.max_violation(sigma), 1e-9) << what;
@@ -1024,12 +1029,15 @@ TEST(LemonResidual, MultilevelParametersChangeTheTimeNotTheOptimum)
       EXPECT_TRUE(lemon.statistics().certified) << what;
       EXPECT_FALSE(lemon.statistics().fallback) << what;   // certified by the hierarchy, not by a whole solve
       depths.insert(lemon.statistics().levels);
+      if(narrow == 0) wide_band = lemon.statistics().largest_band;
+      else narrower += lemon.statistics().largest_band < wide_band;
       refined += lemon.statistics().refinements > 0;
       descended += lemon.statistics().descent_steps > 0;
     }
   EXPECT_GE(depths.size(), 4u);   // the settings did build different hierarchies (1 to 10 levels when written)
   EXPECT_GE(refined, 2u);         // some were certified only after refinements around barriers
   EXPECT_GE(descended, 2u);       // and some after descent steps along them
+  EXPECT_GE(narrower, 2u);        // narrow curve bands did shrink the largest band
   EXPECT_EQ(*depths.begin(), 1u);   // coarsest 2000: the problem is its own coarsest level
 }
 

@@ -21,16 +21,19 @@ namespace internal {
 namespace residual_flow {
 
 // The band: dist[v] >= 0 for the nodes within `radius` arcs of a seed (and, if `around_jumps`, of
-// every arc with a nonzero jump).
+// every arc with a nonzero jump). With `narrow`, the jumps on the curve (arcs with bounds, which stay
+// in place from level to level) bring only their two faces, and only the jumps off the curve grow a
+// band.
 inline std::vector<int> band_distances(const Level& lv, const Adjacency& adj, const std::vector<Int>& pi,
-                                       const std::vector<char>& seed, int radius, bool around_jumps)
+                                       const std::vector<char>& seed, int radius, bool around_jumps, bool narrow)
 {
   std::vector<int> dist(lv.n, -1);
   std::vector<std::size_t> queue;
   auto start = [&](std::size_t v) { if(dist[v] < 0) { dist[v] = 0; queue.push_back(v); } };
+  auto on_curve = [](const Int_arc& e) { return e.has_lo || e.has_up; };
   if(around_jumps)
     for(const Int_arc& e : lv.arcs)
-      if(tension(e, pi) != 0) { start(e.L); start(e.R); }
+      if(tension(e, pi) != 0 && !(narrow && on_curve(e))) { start(e.L); start(e.R); }
   for(std::size_t v = 0; v < seed.size(); ++v)
     if(seed[v]) start(v);
   for(std::size_t q = 0; q < queue.size(); ++q)
@@ -41,16 +44,24 @@ inline std::vector<int> band_distances(const Level& lv, const Adjacency& adj, co
       if(dist[y] < 0) { dist[y] = dist[x] + 1; queue.push_back(y); }
     });
   }
+  if(around_jumps && narrow)   // after the search, so that they do not stop it
+    for(const Int_arc& e : lv.arcs)
+      if(tension(e, pi) != 0 && on_curve(e))
+      {
+        if(dist[e.L] < 0) dist[e.L] = 0;
+        if(dist[e.R] < 0) dist[e.R] = 0;
+      }
   return dist;
 }
 
 // Re-solves, exactly, the band of nodes within `radius` arcs of a seed (and, if `around_jumps`, of
-// every nonzero jump), every connected piece of the rest being contracted to one node.
+// every nonzero jump; `narrow`: see band_distances()), every connected piece of the rest being
+// contracted to one node.
 inline bool refine(Context& ctx, Level& lv, Int U, std::vector<Int>& pi, const std::vector<char>& seed, int radius,
-                   bool around_jumps)
+                   bool around_jumps, bool narrow = false)
 {
   const Adjacency& adj = lv.adjacency();
-  const std::vector<int> dist = band_distances(lv, adj, pi, seed, radius, around_jumps);
+  const std::vector<int> dist = band_distances(lv, adj, pi, seed, radius, around_jumps, around_jumps && narrow);
   // band nodes first, then one node per connected piece of the rest
   std::vector<std::size_t> id(lv.n, npos);
   std::size_t n = 0;

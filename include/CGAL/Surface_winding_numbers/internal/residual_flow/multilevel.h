@@ -97,6 +97,7 @@ inline bool multilevel(Context& ctx, std::size_t n, std::vector<Int_arc> arcs, I
   if(levels.size() == 1) return true;   // certified by the duality of network simplex
   normalize(levels.back(), pi);
   const std::vector<char> no_seed;
+  const bool narrow = levels.front().n <= ctx.options.narrow_curve_band_nodes;
   for(std::size_t l = levels.size() - 1; l-- > 0;)
   {
     std::vector<Int> fine(levels[l].n);
@@ -104,7 +105,7 @@ inline bool multilevel(Context& ctx, std::size_t n, std::vector<Int_arc> arcs, I
     pi.swap(fine);
     prolong_flow(levels[l], levels[l + 1]);
     const int radius = (std::max)(0, l == 0 ? ctx.options.finest_band_radius : ctx.options.band_radius);
-    if(!refine(ctx, levels[l], U, pi, no_seed, radius, true)) return false;
+    if(!refine(ctx, levels[l], U, pi, no_seed, radius, true, narrow)) return false;
     std::vector<Int>().swap(levels[l + 1].x);
     levels[l + 1].workspace.reset();
     // bands around the barriers on the finest level only (on the coarse levels they did not pay)

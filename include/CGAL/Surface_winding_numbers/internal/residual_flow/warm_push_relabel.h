@@ -15,6 +15,16 @@ namespace CGAL {
 namespace Surface_winding_numbers {
 namespace internal {
 
+// asks the processor to fetch the cache line of p (a hint, no effect on the results)
+inline void prefetch(const void* p)
+{
+#if defined(__GNUC__) || defined(__clang__)
+  __builtin_prefetch(p);
+#else
+  (void)p;
+#endif
+}
+
 // Balancing a nearly balanced flow: every node carries a signed imbalance b (> 0: an excess it
 // must send on, < 0: a deficit it can absorb), and the excesses are pushed along residual arcs to
 // the deficits by the push-relabel method (Goldberg and Tarjan) in its first phase only, with the
@@ -221,8 +231,28 @@ private:
     queue_.clear();
     for(std::size_t v = 0; v < n_; ++v)
       if(b_[v] < 0) { label_[v] = 0; queue_.push_back(Index(v)); }
+    // the search is bound by memory latency on large graphs (each node of the queue, its arcs and its
+    // neighbours' labels and reverse arcs lie anywhere): the nodes a few places ahead in the queue are
+    // fetched in three stages, so that their data is in cache when their turn comes (residual alone,
+    // best of five: 13-22 % faster on four of six mid-size benchmark cases, benchmark/residual_solvers.md)
+    constexpr std::size_t ahead = 16;
     for(std::size_t h = 0; h < queue_.size(); ++h)
     {
+      const std::size_t queued = queue_.size();
+      if(h + 3 * ahead < queued) prefetch(first_.data() + queue_[h + 3 * ahead]);
+      if(h + 2 * ahead < queued)
+      {
+        // a node's arcs may straddle two cache lines (a hint only: one past the end is harmless)
+        const Index a = queue_[h + 2 * ahead];
+        prefetch(half_.data() + first_[a]);
+        prefetch(half_.data() + first_[a + 1] - (first_[a + 1] > first_[a] ? 1 : 0));
+      }
+      if(h + ahead < queued)
+        for(Index k = first_[queue_[h + ahead]]; k < first_[queue_[h + ahead] + 1]; ++k)
+        {
+          prefetch(label_.data() + half_[k].head);
+          prefetch(half_.data() + half_[k].rev);
+        }
       const Index w = queue_[h];
       for(Index k = first_[w]; k < first_[w + 1]; ++k)
       {
