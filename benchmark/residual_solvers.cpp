@@ -1,6 +1,6 @@
 // Residual solvers (Eq. 11) on a real case: LEMON network flows vs GLPK's simplex.
 //
-//   residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--simplex 0|1] [--multilevel 0|1] [--table 0|1] [--ml-radius R] [--ml-cluster C] [--ml-coarsest N] [--ml-refinements N] [--ml-descent N] [--ml-finest-radius R] [--mf-budget W] [--verbose]
+//   residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--simplex 0|1] [--multilevel 0|1] [--table 0|1] [--ml-radius R] [--ml-cluster C] [--ml-coarsest N] [--ml-refinements N] [--ml-descent N] [--ml-finest-radius R] [--mf-budget W] [--narrow-curve MAX_NODES] [--split-bands MIN_NODES] [--routing MIN_NODES] [--sequential] [--verbose]
 //
 // Reads the mesh and its curves like the swn tool (OBJ `l` lines and/or a curve file), cuts the mesh
 // so that the curves lie on edges, optionally subdivides it N times 1-to-4 at the edge midpoints
@@ -133,13 +133,17 @@ int main(int argc, char** argv)
     else if(a == "--ml-coarsest" && more) options.coarsest_nodes = std::size_t(std::atol(argv[++i]));
     else if(a == "--ml-refinements" && more) options.max_refinements = std::size_t(std::atol(argv[++i]));
     else if(a == "--mf-budget" && more) options.max_flow_budget = std::atof(argv[++i]);
+    else if(a == "--narrow-curve" && more) options.narrow_curve_band_nodes = std::size_t(std::atol(argv[++i]));
+    else if(a == "--split-bands" && more) options.split_band_nodes = std::size_t(std::atol(argv[++i]));
+    else if(a == "--routing" && more) options.carried_flow_routing_nodes = std::size_t(std::atol(argv[++i]));
     else if(a == "--ml-descent" && more) options.descent_steps = std::size_t(std::atol(argv[++i]));
     else if(a == "--ml-finest-radius" && more) options.finest_band_radius = std::atoi(argv[++i]);
     else if(a == "--table" && more) run_table = std::atoi(argv[++i]) != 0;
+    else if(a == "--sequential") options.concurrent = false;
     else if(a == "--verbose") options.verbose = true;
     else mesh_file = a;
   }
-  if(mesh_file.empty()) { std::fprintf(stderr, "usage: residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--simplex 0|1] [--multilevel 0|1] [--table 0|1] [--ml-radius R] [--ml-cluster C] [--ml-coarsest N] [--ml-refinements N] [--ml-descent N] [--ml-finest-radius R] [--mf-budget W] [--verbose]\n"); return 2; }
+  if(mesh_file.empty()) { std::fprintf(stderr, "usage: residual_solvers MESH [--curve FILE] [--glpk 0|1] [--repeat N] [--subdivide N] [--whole 0|1] [--simplex 0|1] [--multilevel 0|1] [--table 0|1] [--ml-radius R] [--ml-cluster C] [--ml-coarsest N] [--ml-refinements N] [--ml-descent N] [--ml-finest-radius R] [--mf-budget W] [--narrow-curve MAX_NODES] [--split-bands MIN_NODES] [--routing MIN_NODES] [--sequential] [--verbose]\n"); return 2; }
   auto with_algorithm = [&](Lemon::Algorithm a) { Lemon::Options o = options; o.algorithm = a; return o; };
 
   Mesh input;

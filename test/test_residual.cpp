@@ -219,7 +219,8 @@ void expect_matches_glpk(const SWN::Residual_problem& P, Lemon::Algorithm algori
   expect_solver_matches_glpk(lemon, P, what, lemon_objective);
 }
 
-// the options of a multilevel solver whose hierarchy goes deep even on small problems
+// the options of a multilevel solver whose hierarchy goes deep even on small problems, every level's
+// carried-down flow balanced inside the coarser regions
 Options deep_options(std::size_t max_refinements = 8, std::size_t descent_steps = 30)
 {
   Options o;
@@ -230,6 +231,7 @@ Options deep_options(std::size_t max_refinements = 8, std::size_t descent_steps 
   o.max_refinements = max_refinements;
   o.finest_band_radius = 2;
   o.descent_steps = descent_steps;
+  o.carried_flow_routing_nodes = 0;
   return o;
 }
 
@@ -313,8 +315,10 @@ TEST(LemonResidual, NameAndDefaults)
   EXPECT_STREQ(Lemon::name(), "lemon");
   Lemon l;
   EXPECT_EQ(l.options().algorithm, Options::MULTILEVEL);
+  EXPECT_TRUE(l.options().concurrent);
   EXPECT_TRUE(l.error().empty());
   static_assert(SI::is_residual_solver<Lemon>::value, "LEMON_residual_solver models SurfaceWindingNumbersResidualSolver");
+  static_assert(SI::takes_concurrency<Lemon>::value, "LEMON_residual_solver takes the concurrency setting");
   static_assert(!std::is_copy_constructible<Lemon>::value, "not copyable");
 #ifdef CGAL_SWN_USE_LEMON
   static_assert(std::is_same<SI::Default_linear_program_traits, Lemon>::value, "LEMON is the default residual solver");
@@ -338,6 +342,8 @@ TEST(LemonResidual, NameAndDefaults)
   EXPECT_EQ(l.options().max_refinements, 16u);
   EXPECT_EQ(l.options().max_flow_budget, 200.);
   EXPECT_EQ(l.options().narrow_curve_band_nodes, 1000000u);
+  EXPECT_EQ(l.options().split_band_nodes, 5000u);
+  EXPECT_EQ(l.options().carried_flow_routing_nodes, 100000u);
   Options o;
   o.coarsest_nodes = 0;
   o.cluster_size = 1;
@@ -350,6 +356,9 @@ TEST(LemonResidual, NameAndDefaults)
   EXPECT_EQ(p.options().band_radius, 0);
   EXPECT_EQ(p.options().finest_band_radius, 0);
   EXPECT_EQ(p.options().max_flow_budget, -1.);
+  // a sequential solve leaves the options as they were
+  ASSERT_TRUE(l.solve_residual(rp.P, sigma, false)) << l.error();
+  EXPECT_TRUE(l.options().concurrent);
 }
 
 TEST(LemonResidual, RandomClosedProblemsMatchGLPK)
@@ -993,7 +1002,7 @@ TEST(LemonResidual, PipelineInstancesMatchGLPK)
 }
 
 // The hierarchy's parameters (coarsest size, cluster size, band radius, descent steps, narrow curve
-// bands) change how the multilevel solver gets there, never where: on a pipeline instance (two tori,
+// bands, bands in halves, routing of carried-down flows) change how the multilevel solver gets there, never where: on a pipeline instance (two tori,
 // broken curves) every setting certifies network simplex's optimum, through hierarchies of different
 // depths.
 TEST(LemonResidual, MultilevelParametersChangeTheTimeNotTheOptimum)
@@ -1007,14 +1016,16 @@ TEST(LemonResidual, MultilevelParametersChangeTheTimeNotTheOptimum)
   struct Setting { std::size_t coarsest, cluster; int radius; };
   const Setting settings[] = {{12, 2, 0}, {12, 4, 1}, {12, 16, 6}, {12, 64, 2}, {50, 16, 0}, {2000, 16, 6}};
   std::set<std::size_t> depths;
-  std::size_t refined = 0, descended = 0, narrower = 0, wide_band = 0;
+  std::size_t refined = 0, descended = 0, narrower = 0, wide_band = 0, split = 0, routed = 0;
   for(const Setting& s : settings)
     for(std::size_t descent : {std::size_t(0), std::size_t(30)})
       for(std::size_t narrow : {std::size_t(0), std::size_t(1000000)})   // off, on (the default)
+        for(std::size_t halves : {std::size_t(0), std::size_t(40)})        // first bands in halves: never, from 40 nodes
     {
       const std::string what = "coarsest " + std::to_string(s.coarsest) + ", clusters of " + std::to_string(s.cluster) +
                                ", radius " + std::to_string(s.radius) + ", descent steps " + std::to_string(descent) +
-                               ", narrow curve bands up to " + std::to_string(narrow) + " nodes";
+                               ", narrow curve bands up to " + std::to_string(narrow) + " nodes, bands in halves from " +
+                               std::to_string(halves) + " nodes";
       Options opt;
       opt.coarsest_nodes = s.coarsest;
       opt.cluster_size = s.cluster;
@@ -1022,6 +1033,10 @@ TEST(LemonResidual, MultilevelParametersChangeTheTimeNotTheOptimum)
       opt.finest_band_radius = 2 * s.radius;
       opt.descent_steps = descent;
       opt.narrow_curve_band_nodes = narrow;
+      opt.split_band_nodes = halves;
+      opt.concurrent = descent == 0;   // the halves on two threads or on one
+      // the carried-down flows balanced inside the coarser regions on every level, or on none
+      opt.carried_flow_routing_nodes = halves == 0 ? 0 : std::size_t(-1);
       Lemon lemon(opt);
       ASSERT_TRUE(lemon.solve_residual(P, sigma)) << what << ": " << lemon.error();
       EXPECT_LE(P.max_violation(sigma), 1e-9) << what;
@@ -1029,8 +1044,15 @@ TEST(LemonResidual, MultilevelParametersChangeTheTimeNotTheOptimum)
       EXPECT_TRUE(lemon.statistics().certified) << what;
       EXPECT_FALSE(lemon.statistics().fallback) << what;   // certified by the hierarchy, not by a whole solve
       depths.insert(lemon.statistics().levels);
-      if(narrow == 0) wide_band = lemon.statistics().largest_band;
-      else narrower += lemon.statistics().largest_band < wide_band;
+      if(halves == 0)
+      {
+        EXPECT_EQ(lemon.statistics().split_bands, 0u) << what;
+        if(narrow == 0) wide_band = lemon.statistics().largest_band;
+        else narrower += lemon.statistics().largest_band < wide_band;
+      }
+      else EXPECT_EQ(lemon.statistics().routed_levels, 0u) << what;
+      split += lemon.statistics().split_bands > 0;
+      routed += lemon.statistics().routed_levels > 0;
       refined += lemon.statistics().refinements > 0;
       descended += lemon.statistics().descent_steps > 0;
     }
@@ -1038,6 +1060,8 @@ TEST(LemonResidual, MultilevelParametersChangeTheTimeNotTheOptimum)
   EXPECT_GE(refined, 2u);         // some were certified only after refinements around barriers
   EXPECT_GE(descended, 2u);       // and some after descent steps along them
   EXPECT_GE(narrower, 2u);        // narrow curve bands did shrink the largest band
+  EXPECT_GE(split, 4u);           // bands were solved in halves (then certified all the same)
+  EXPECT_GE(routed, 4u);          // and carried-down flows were balanced inside the coarser regions
   EXPECT_EQ(*depths.begin(), 1u);   // coarsest 2000: the problem is its own coarsest level
 }
 

@@ -106,10 +106,10 @@ connected component, the label covering the largest area is 0.
     \cgalParamType{Boolean}
     \cgalParamDefault{`false`}
   \cgalParamNEnd
-  \cgalParamNBegin{Surface_winding_numbers::parameters::concurrency}
-    \cgalParamDescription{the one switch for the threads of the package: with `CGAL::Parallel_tag` (or `true`), when the curve has interior endpoints on a mesh with handles, the per-mesh part of the Hodge projection (the harmonic basis, or the factorized 2-form Laplacian on meshes with more than 24 homology classes) is computed on a second thread (`std::async`) while the first jump-Laplace system is factorized and solved; with `CGAL::Sequential_tag` (or `false`) everything runs on the calling thread. Same results either way}
-    \cgalParamType{`CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `bool`}
-    \cgalParamDefault{`CGAL::Parallel_tag()`}
+  \cgalParamNBegin{Surface_winding_numbers::parameters::concurrent_factorizations}
+    \cgalParamDescription{when the curve has interior endpoints on a mesh with handles, computes the per-mesh part of the Hodge projection (the harmonic basis, or the factorized 2-form Laplacian on meshes with more than 24 homology classes) on a second thread (`std::async`) while the first jump-Laplace system is factorized and solved; same results either way. Set it to `false` if the sparse linear solver cannot run two factorizations at once}
+    \cgalParamType{Boolean}
+    \cgalParamDefault{`true` (`false` without `CGAL_HAS_THREADS`)}
   \cgalParamNEnd
   \cgalParamNBegin{Surface_winding_numbers::parameters::keep_hodge_factorization}
     \cgalParamDescription{ignored here: this function solves once, and frees the per-mesh part of the Hodge projection as soon as the harmonic part is computed, before the residual step (lower peak memory). `Surface_winding_numbers_solver::solve()` keeps it by default for the next solve on the same mesh}

@@ -106,16 +106,31 @@ public:
   */
   bool solve_residual(const Residual_problem& P, std::vector<double>& sigma)
   {
+    return solve_residual(P, sigma, ctx_.options.concurrent);
+  }
+
+  /*!
+  solves `P` as `solve_residual(P, sigma)` does, on the calling thread only if `concurrent` is `false`
+  (whatever `options().concurrent` says). The package's functions call this with the setting of their
+  named parameter `concurrency`.
+  */
+  bool solve_residual(const Residual_problem& P, std::vector<double>& sigma, bool concurrent)
+  {
+    const bool saved = ctx_.options.concurrent;
+    ctx_.options.concurrent = saved && concurrent;
     ctx_.error.clear();
     ctx_.stats = Statistics();
+    bool ok = false;
     try
     {
-      return solve(P, sigma);
+      ok = solve(P, sigma);
     }
     catch(const std::exception& e)
     {
-      return ctx_.fail(std::string("LEMON residual solver: ") + e.what());
+      ok = ctx_.fail(std::string("LEMON residual solver: ") + e.what());
     }
+    ctx_.options.concurrent = saved;
+    return ok;
   }
 
 private:

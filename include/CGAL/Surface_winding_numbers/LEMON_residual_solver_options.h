@@ -29,6 +29,10 @@ struct LEMON_residual_solver_options
 
   /// the algorithm (default `MULTILEVEL`; `NETWORK_SIMPLEX` is 2-10x slower beyond 30k faces)
   Algorithm algorithm = MULTILEVEL;
+  /// `true` (the default): `MULTILEVEL` solves the two halves of large bands (see `split_band_nodes`)
+  /// on two threads. The named parameter `concurrency` of the package's functions overrides it with
+  /// `false` when it asks for a sequential run.
+  bool concurrent = true;
   /// largest violation of the bounds accepted in the answer (default `1e-9`; raised to
   /// \f$ 2^{1-k} \f$ when the integer scaling exponent `k` is small)
   double feasibility_tolerance = 1e-9;
@@ -59,12 +63,22 @@ struct LEMON_residual_solver_options
   /// (default 200); beyond it Boykov-Kolmogorov finishes the flow. 0: Boykov-Kolmogorov only;
   /// negative: no budget
   double max_flow_budget = 200;
+  /// first bands of at least this many nodes are cut in two halves solved side by side, on two
+  /// threads if `concurrent` (default 5000; 0: never); on the 1.15M-face chain10 of the benchmark the
+  /// residual is about 20 % longer without them
+  std::size_t split_band_nodes = 5000;
   /// on problems of at most this many faces (default 1,000,000; 0: never) the first band of each level
   /// grows only around the jumps off the curve (the completions of its gaps, which move from level to
   /// level), and the jumps on the curve bring only their two faces: smaller bands, less network simplex
   /// (residual summed over the benchmark's 232 cases with handles 9.5 % lower); beyond a million faces
   /// the first certificate then has more to repair than the band saves
   std::size_t narrow_curve_band_nodes = 1000000;
+  /// on levels of at least this many nodes (default 100,000; 0: every level) the flow carried down
+  /// from the coarser level is first balanced inside the regions of the coarser levels, by
+  /// augmenting paths within a work budget, before the certificate's maximum flow: about 20 % of the
+  /// residual on the 1.15M-face chain10 of the benchmark; on smaller levels the maximum flow alone is
+  /// faster
+  std::size_t carried_flow_routing_nodes = 100000;
   /// @}
 };
 
@@ -93,6 +107,8 @@ struct LEMON_residual_solver_statistics
   std::size_t descent_steps = 0;       ///< `MULTILEVEL`: steps along the barriers of refused certificates (every level)
   std::size_t descent_pieces = 0;      ///< `MULTILEVEL`: connected pieces moved by those steps, each by its own line search
   std::size_t largest_band = 0;        ///< `MULTILEVEL`: nodes of the largest problem given to network simplex
+  std::size_t split_bands = 0;         ///< `MULTILEVEL`: bands solved in two halves
+  std::size_t routed_levels = 0;       ///< `MULTILEVEL`: levels whose carried-down flow was balanced inside the coarser regions
   std::size_t certificates = 0;        ///< `MULTILEVEL`: maximum flows run (every level, every refinement)
   std::size_t max_flow_fallbacks = 0;  ///< `MULTILEVEL`: maximum flows that Boykov-Kolmogorov finished (push-relabel over its budget)
   double objective = 0;                ///< Eq. 11 objective of `sigma`, recomputed with the original data

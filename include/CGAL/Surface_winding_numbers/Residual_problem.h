@@ -21,7 +21,7 @@ minimizes
 subject to `lower[a] <= s[a] + sigma[left[a]] - sigma[right[a]] <= upper[a]` for every arc `a` (an
 interior edge, seen as a pair of faces: `left[a]` lies to its left). On curve edges the bounds are
 `[0, Gamma]` (or `[Gamma, 0]`) and the cost is `epsilon` times the length; elsewhere the bounds are
-infinite and the cost is the length (lengths in units of the mean edge length).
+infinite and the cost is the length (lengths in units of the mean length of the interior edges).
 `gauge_faces` lists one face per connected component whose shift may be fixed to 0 (the objective
 and the constraints only see differences of shifts).
 

@@ -74,7 +74,8 @@ CGAL_SWN_NAMED_PARAMETER(lp_solver_t, lp_solver)
 CGAL_SWN_NAMED_PARAMETER(use_reduced_residual_t, use_reduced_residual)
 /// `CGAL::Sequential_tag()` or `false`: the whole solve runs on the calling thread; `CGAL::Parallel_tag()`
 /// or `true` (the default): the package may start one more thread, for the
-/// Hodge projection's per-mesh part during the first jump-Laplace solve. The one switch for every thread the package starts; same results
+/// Hodge projection's per-mesh part during the first jump-Laplace solve and for the halves of large
+/// bands in `LEMON_residual_solver`. The one switch for every thread the package starts; same results
 /// either way. (`CGAL::Parallel_if_available_tag` is whichever of the two CGAL makes it; the package's
 /// threads are `std::thread`s and need no TBB.)
 CGAL_SWN_NAMED_PARAMETER(concurrency_t, concurrency)

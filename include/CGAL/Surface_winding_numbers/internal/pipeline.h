@@ -39,7 +39,7 @@ struct Solve_options
   double epsilon = 0.01;
   bool verbose = false;
   bool reduced_residual = false;   // paper Sec. 6 instead of the exact Eq. 11
-  bool concurrent = true;   // named parameter concurrency: the Hodge projection's per-mesh part on a second thread
+  bool concurrent = true;   // a second thread (named parameter concurrency): the Hodge projection's per-mesh part, the residual solver's
   bool keep_hodge_factorization = true;    // false: freed after the harmonic part, before the residual
   std::size_t harmonic_basis_max_classes = internal::harmonic_basis_max_classes;   // else the 2-form Laplacian
 };
@@ -221,12 +221,13 @@ public:
 
       // v: residual function (Eq. 11), or its reduced approximation (Sec. 6)
       if(options.reduced_residual)
-        r.v = reduced_residual_function(m_, chain, gamma, epsilon, lp, rep.lp_objective, rep.lp_variables, rep.lp_rows);
+        r.v = reduced_residual_function(m_, chain, gamma, epsilon, lp, options.concurrent, rep.lp_objective, rep.lp_variables, rep.lp_rows);
       else
       {
         const std::vector<double> v0 = local_integration(m_, gamma);
         const std::vector<double> sigma = residual_function(residual_problem(m_, v0, chain, epsilon), lp,
-                                                            rep.lp_objective, rep.lp_variables, rep.lp_rows);
+                                                            rep.lp_objective, rep.lp_variables, rep.lp_rows,
+                                                            options.concurrent);
         r.v.resize(3 * m_.nf);
         for(std::size_t k = 0; k < 3 * m_.nf; ++k) r.v[k] = v0[k] + sigma[k / 3];
       }

@@ -90,7 +90,7 @@ inline std::vector<double> shortest_path_completion(const Mesh_tables& m, const 
 template <class Solver>
 std::vector<double> reduced_residual_function(const Mesh_tables& m, const std::vector<double>& chain,
                                               const std::vector<double>& gamma, double epsilon, Solver& solver,
-                                              double& objective, std::size_t& n_vars, std::size_t& n_rows)
+                                              bool concurrent, double& objective, std::size_t& n_vars, std::size_t& n_rows)
 {
   std::vector<double> completed = shortest_path_completion(m, chain);
   for(std::size_t e = 0; e < m.ne; ++e) completed[e] += chain[e];
@@ -152,7 +152,7 @@ std::vector<double> reduced_residual_function(const Mesh_tables& m, const std::v
     P.lower.push_back(-std::numeric_limits<double>::infinity());
     P.upper.push_back(std::numeric_limits<double>::infinity());
   }
-  const std::vector<double> x = residual_function(P, solver, objective, n_vars, n_rows);
+  const std::vector<double> x = residual_function(P, solver, objective, n_vars, n_rows, concurrent);
   for(std::size_t c = 0; c < 3 * m.nf; ++c) v[c] += x[region[c / 3]];
   return v;
 }

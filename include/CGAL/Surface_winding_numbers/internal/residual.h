@@ -149,6 +149,15 @@ struct is_residual_solver<T, std::void_t<decltype(std::declval<T&>().solve_resid
                                 std::declval<const Residual_problem&>(), std::declval<std::vector<double>&>()))>>
   : std::true_type {};
 
+// Detects residual solvers that take the package's concurrency setting (a member
+// solve_residual(problem, sigma, bool concurrent)).
+template <class T, class = void>
+struct takes_concurrency : std::false_type {};
+template <class T>
+struct takes_concurrency<T, std::void_t<decltype(std::declval<T&>().solve_residual(
+                              std::declval<const Residual_problem&>(), std::declval<std::vector<double>&>(), true))>>
+  : std::true_type {};
+
 // Detects solvers that explain their failures (a member error() convertible to std::string).
 template <class T, class = void>
 struct has_error_message : std::false_type {};
@@ -157,16 +166,24 @@ struct has_error_message<T, std::void_t<decltype(std::string(std::declval<const 
 
 // The residual function (paper Sec. 3.4, Eq. 11): solves the residual problem with the given solver
 // (a residual solver, or LP traits), checks the optimum against the constraints, and returns sigma.
+// `concurrent`: whether the solver may start threads (if it can be told).
 template <class Solver>
 std::vector<double> residual_function(const Residual_problem& P, Solver& solver, double& objective,
-                                      std::size_t& n_vars, std::size_t& n_rows)
+                                      std::size_t& n_vars, std::size_t& n_rows, bool concurrent = true)
 {
   std::vector<double> sigma;
   if constexpr(is_residual_solver<Solver>::value)
   {
     n_vars = P.number_of_faces;
     n_rows = P.number_of_arcs();
-    if(!solver.solve_residual(P, sigma))
+    bool solved = false;
+    if constexpr(takes_concurrency<Solver>::value) solved = solver.solve_residual(P, sigma, concurrent);
+    else
+    {
+      (void)concurrent;
+      solved = solver.solve_residual(P, sigma);
+    }
+    if(!solved)
     {
       std::string why;
       if constexpr(has_error_message<Solver>::value) why = std::string(": ") + solver.error();

@@ -56,6 +56,7 @@ struct Context
     if(options.verbose) std::cerr << "[swn] " << why << "\n";
     return false;
   }
+  bool concurrent() const { return options.concurrent; }
   std::ostream* log() const { return options.verbose ? &std::cerr : nullptr; }
 };
 

@@ -104,6 +104,7 @@ inline bool multilevel(Context& ctx, std::size_t n, std::vector<Int_arc> arcs, I
     for(std::size_t v = 0; v < levels[l].n; ++v) fine[v] = pi[levels[l].parent[v]];
     pi.swap(fine);
     prolong_flow(levels[l], levels[l + 1]);
+    balance_inside_regions(ctx, levels, l, levels[l].x);
     const int radius = (std::max)(0, l == 0 ? ctx.options.finest_band_radius : ctx.options.band_radius);
     if(!refine(ctx, levels[l], U, pi, no_seed, radius, true, narrow)) return false;
     std::vector<Int>().swap(levels[l + 1].x);

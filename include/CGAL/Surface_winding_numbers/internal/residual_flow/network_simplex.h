@@ -84,7 +84,7 @@ inline bool duality_holds(const Network& net, const std::vector<Int>& pi, const 
 
 // Network simplex on `arcs` over n nodes, its optimum checked by duality: the potentials pi and, per
 // arc, its flow x from L to R in the sense of the subdifferential (left_slope(J) <= x <=
-// right_slope(J): a circulation). Touches nothing shared: two threads may run it at once.
+// right_slope(J): a circulation).
 inline bool network_simplex_with_flows(std::size_t n, const std::vector<Int_arc>& arcs, Int U, std::vector<Int>& pi,
                                        std::vector<Int>& x, std::string& why, std::size_t* network_arcs = nullptr)
 {
