@@ -1,13 +1,15 @@
-// Tests of the file-format / mesh-preparation layer (include/CGAL/Surface_winding_numbers/IO/).
+// Tests of the swn tool's file handling (tools/swn/swn_io/) and of the library's conforming_cut().
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
-#include <CGAL/Surface_winding_numbers/IO/errors.h>
-#include <CGAL/Surface_winding_numbers/IO/read_mesh.h>
-#include <CGAL/Surface_winding_numbers/IO/curve_io.h>
-#include <CGAL/Surface_winding_numbers/IO/conforming_cut.h>
-#include <CGAL/Surface_winding_numbers/IO/write_outputs.h>
+#include "swn_io/errors.h"
+#include "swn_io/read_mesh.h"
+#include "swn_io/read_curves.h"
+#include "swn_io/conforming_cut.h"
+#include "swn_io/write_outputs.h"
+#include "swn_io/json.h"
+#include "swn_io/atomic_output_dir.h"
 
 #include <CGAL/IO/OFF.h>  // independent readers: cross-checks of ours
 #include <CGAL/IO/PLY.h>
@@ -1144,8 +1146,8 @@ TEST(Writers, LargeOutputsReadBackExactly)
   IO::write_labeled_ply(ascii, m, labels, wf, false);
   const std::string b = bin.str();
   const std::size_t header = b.find("end_header\n") + std::string("end_header\n").size();
-  // vertices: 3 doubles; faces: count, 3 indices, label, float, 3 colour bytes
-  EXPECT_EQ(b.size() - header, m.number_of_vertices() * 24 + m.number_of_faces() * (1 + 12 + 4 + 4 + 3));
+  // vertices: 3 doubles; faces: count, 3 indices, label, float, 4 colour bytes (RGBA)
+  EXPECT_EQ(b.size() - header, m.number_of_vertices() * 24 + m.number_of_faces() * (1 + 12 + 4 + 4 + 4));
   std::istringstream as(ascii.str());
   while(std::getline(as, line) && line != "end_header") {}
   for(std::size_t v = 0; v < m.number_of_vertices(); ++v)

@@ -1,13 +1,15 @@
 // Copyright (c) 2024 The CGAL Surface_winding_numbers contributors.
 // SPDX-License-Identifier: MIT
 //
-// Writers for the outputs of the `swn` tool: labels, labelled PLY, the authors' w.obj, curve OBJ files, an
-// all-or-nothing output directory and a tiny JSON writer.
+// Writers for the outputs of the `swn` tool: labels, labelled PLY, the authors' w.obj, curve OBJ files.
 
-#ifndef CGAL_SURFACE_WINDING_NUMBERS_IO_WRITE_OUTPUTS_H
-#define CGAL_SURFACE_WINDING_NUMBERS_IO_WRITE_OUTPUTS_H
+#ifndef CGAL_SWN_TOOL_IO_WRITE_OUTPUTS_H
+#define CGAL_SWN_TOOL_IO_WRITE_OUTPUTS_H
 
+#include <CGAL/IO/Color.h>
+#include <CGAL/IO/io.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh/IO/PLY.h>
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
@@ -16,22 +18,14 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
-#include <filesystem>
 #include <fstream>
-#include <iomanip>
 #include <limits>
-#include <locale>
 #include <ostream>
-#include <random>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <string_view>
-#include <system_error>
 #include <type_traits>
 #include <utility>
-#include <variant>
 #include <vector>
 
 /*!
@@ -51,22 +45,13 @@ namespace CGAL {
 namespace Surface_winding_numbers {
 namespace IO {
 
-/// \cond SKIP_IN_MANUAL
+
 namespace internal {
 
 inline void check_stream(std::ostream& os, const char* what)
 {
   if(!os)
     throw std::runtime_error(std::string("write error while writing ") + what);
-}
-
-template <class Mesh>
-std::array<std::size_t, 3> face_vertices(const Mesh& m, typename Mesh::Face_index f)
-{
-  auto h = m.halfedge(f);
-  std::array<std::size_t, 3> r;
-  for(int k = 0; k < 3; ++k) { r[k] = std::size_t(m.target(h)); h = m.next(h); }
-  return r;
 }
 
 template <class Mesh>
@@ -82,7 +67,7 @@ void check_mesh_for_writing(const Mesh& m)
 // Gathers output in a 64 KiB buffer and hands it to the stream in large blocks: one `ostream` call per
 // number costs more than formatting the number. Numbers are written locale independently, doubles as the
 // shortest decimal that reads back to the same value (std::to_chars; "nan" whatever the sign bit, "inf",
-// "-inf"), binary values little endian.
+// "-inf").
 class Output_buffer
 {
 public:
@@ -102,18 +87,6 @@ public:
     auto r = std::to_chars(b, b + sizeof(b), x);
     buf_.append(b, r.ptr);
     return spill();
-  }
-  template <class T>
-  void put_le(T value)
-  {
-    unsigned char b[sizeof(T)];
-    std::memcpy(b, &value, sizeof(T));
-    const std::uint16_t probe = 1;   // host to little endian
-    unsigned char first;
-    std::memcpy(&first, &probe, 1);
-    if(first == 0) std::reverse(b, b + sizeof(T));
-    buf_.append(reinterpret_cast<const char*>(b), sizeof(T));
-    spill();
   }
   void flush()
   {
@@ -229,7 +202,7 @@ void write_to_path(const std::string& path, Writer&& writer)
 }
 
 } // namespace internal
-/// \endcond
+
 
 /*!
   \brief writes `text` to the file `path` (binary mode, no newline translation).
@@ -284,7 +257,7 @@ inline std::array<unsigned char, 3> label_color(int label)
 
 /*!
   \brief writes the mesh as PLY with per-face `int label`, `float winding_number` and
-  `uchar red, green, blue` (from `label_color()`), readable by MeshLab.
+  `uchar red, green, blue, alpha` (from `label_color()`), readable by MeshLab, with `CGAL::IO::write_PLY()`.
 
   Vertex coordinates are written as `double`. NaN winding numbers are written as NaN.
   \param os the stream written to (open it in binary mode for the binary format)
@@ -294,82 +267,57 @@ inline std::array<unsigned char, 3> label_color(int label)
   \param winding_map either a `std::vector<double>` of per-face values (may be empty: no `winding_number`
   property), or per-corner values (a readable property map or callable keyed by halfedge, the corner
   `(target(h), face(h))`), averaged over the defined (non-NaN) corners of each face
-  \param binary `binary_little_endian` if true (the default: compact, exact NaN), ASCII otherwise; open the
-  stream in binary mode. In ASCII, NaN is written as `nan`, which some readers (e.g. CGAL's) reject.
+  \param binary `binary_little_endian` if true (the default: compact, exact NaN), ASCII otherwise (17
+  significant digits); open the stream in binary mode. In ASCII, NaN is written as `nan`, which some readers
+  (e.g. CGAL's) reject.
 */
 template <class Point, class LabelMap, class WindingMap>
 void write_labeled_ply(std::ostream& os, const CGAL::Surface_mesh<Point>& mesh, const LabelMap& label_map,
                        const WindingMap& winding_map, bool binary = true)
 {
+  typedef CGAL::Surface_mesh<Point> Mesh;
+  typedef typename Mesh::Face_index Face_index;
   internal::check_mesh_for_writing(mesh);
   const std::vector<int> labels = internal::face_ints(mesh, label_map);
-  const std::vector<double> face_winding_numbers = internal::face_doubles(mesh, winding_map);
+  const std::vector<double> winding_numbers = internal::face_doubles(mesh, winding_map);
   const std::size_t nf = mesh.number_of_faces();
   if(!labels.empty() && labels.size() != nf)
     throw std::invalid_argument("write_labeled_ply: one label per face expected");
-  if(!face_winding_numbers.empty() && face_winding_numbers.size() != nf)
+  if(!winding_numbers.empty() && winding_numbers.size() != nf)
     throw std::invalid_argument("write_labeled_ply: one winding number per face expected");
-  const bool has_l = !labels.empty(), has_w = !face_winding_numbers.empty();
-  os << "ply\nformat " << (binary ? "binary_little_endian" : "ascii") << " 1.0\n"
-     << "comment written by CGAL Surface_winding_numbers\n"
-     << "element vertex " << mesh.number_of_vertices() << "\n"
-     << "property double x\nproperty double y\nproperty double z\n"
-     << "element face " << nf << "\n"
-     << "property list uchar int vertex_indices\n";
-  if(has_l) os << "property int label\n";
-  if(has_w) os << "property float winding_number\n";
-  if(has_l) os << "property uchar red\nproperty uchar green\nproperty uchar blue\n";
-  os << "end_header\n";
-  internal::Output_buffer out(os);
-  if(binary)
+  // write_PLY() writes every property of a Surface_mesh whose type it knows: a copy keeps the connectivity
+  // and the points only (CGAL 5.5's assign() does not compile) and gets the face properties, in the
+  // order of the header
+  Mesh out(mesh);
+  out.remove_all_property_maps();
+  if(!labels.empty())
   {
-    for(auto v : mesh.vertices())
+    auto l = out.template add_property_map<Face_index, std::int32_t>("f:label", 0).first;
+    for(Face_index f : out.faces()) l[f] = labels[std::size_t(f)];
+  }
+  if(!winding_numbers.empty())
+  {
+    auto w = out.template add_property_map<Face_index, float>("f:winding_number", 0.f).first;
+    for(Face_index f : out.faces()) w[f] = static_cast<float>(winding_numbers[std::size_t(f)]);
+  }
+  if(!labels.empty())
+  {
+    auto c = out.template add_property_map<Face_index, CGAL::IO::Color>("f:color").first;
+    for(Face_index f : out.faces())
     {
-      const Point& p = mesh.point(v);
-      out.put_le<double>(CGAL::to_double(p.x()));
-      out.put_le<double>(CGAL::to_double(p.y()));
-      out.put_le<double>(CGAL::to_double(p.z()));
-    }
-    for(auto f : mesh.faces())
-    {
-      auto t = internal::face_vertices(mesh, f);
-      out.put_le<std::uint8_t>(3);
-      for(std::size_t k : t) out.put_le<std::int32_t>(static_cast<std::int32_t>(k));
-      if(has_l) out.put_le<std::int32_t>(labels[std::size_t(f)]);
-      if(has_w) out.put_le<float>(static_cast<float>(face_winding_numbers[std::size_t(f)]));
-      if(has_l)
-      {
-        auto c = label_color(labels[std::size_t(f)]);
-        for(int k = 0; k < 3; ++k) out.put_le<std::uint8_t>(c[k]);
-      }
+      const auto rgb = label_color(labels[std::size_t(f)]);
+      c[f] = CGAL::IO::Color(rgb[0], rgb[1], rgb[2]);
     }
   }
-  else
-  {
-    for(auto v : mesh.vertices())
-    {
-      const Point& p = mesh.point(v);
-      out << CGAL::to_double(p.x()) << ' ' << CGAL::to_double(p.y()) << ' '
-          << CGAL::to_double(p.z()) << '\n';
-    }
-    for(auto f : mesh.faces())
-    {
-      auto t = internal::face_vertices(mesh, f);
-      out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2];
-      if(has_l) out << ' ' << labels[std::size_t(f)];
-      if(has_w)
-      {
-        out << ' ' << static_cast<float>(face_winding_numbers[std::size_t(f)]);
-      }
-      if(has_l)
-      {
-        auto c = label_color(labels[std::size_t(f)]);
-        out << ' ' << int(c[0]) << ' ' << int(c[1]) << ' ' << int(c[2]);
-      }
-      out << '\n';
-    }
-  }
-  out.flush();
+  const CGAL::IO::Mode mode = CGAL::IO::get_mode(os);
+  const std::streamsize precision = os.precision();
+  CGAL::IO::set_mode(os, binary ? CGAL::IO::BINARY : CGAL::IO::ASCII);
+  const bool ok = CGAL::IO::write_PLY(os, out, "written by CGAL Surface_winding_numbers",
+                                      CGAL::parameters::stream_precision(17));
+  CGAL::IO::set_mode(os, mode);
+  os.precision(precision);
+  if(!ok)
+    throw std::runtime_error("write error while writing PLY");
   internal::check_stream(os, "PLY");
 }
 
@@ -599,422 +547,8 @@ void write_chain_obj(const std::string& path, const CGAL::Surface_mesh<Point>& m
   internal::write_to_path(path, [&](std::ostream& os) { write_chain_obj(os, mesh, chain, all_vertices); });
 }
 
-/*!
-  \brief an output directory written all-or-nothing.
-
-  Every file is first written to a hidden temporary name inside the target directory (created, with its
-  missing parents, by the constructor). `commit()` renames all of them into place. If the object is destroyed
-  without `commit()` (an exception, an early return), the temporaries are removed, and so are the directories
-  the constructor created if they are empty, so that a failed run leaves nothing behind. Renames within one
-  directory are atomic per file; if a rename fails in `commit()`, the files renamed before it stay.
-*/
-class Atomic_output_dir
-{
-public:
-  /// \brief prepares `dir`, creating it (and missing parents) if needed.
-  /// \throws std::runtime_error if it cannot be created or is not a directory
-  explicit Atomic_output_dir(const std::string& dir) : dir_(dir.empty() ? std::string(".") : dir)
-  {
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    fs::path p = fs::absolute(dir_, ec);
-    if(ec) p = dir_;
-    std::vector<fs::path> missing;
-    for(fs::path q = p; !q.empty() && !fs::exists(q, ec); q = q.parent_path())
-    {
-      missing.push_back(q);
-      if(q == q.parent_path()) break;
-    }
-    for(auto it = missing.rbegin(); it != missing.rend(); ++it)
-    {
-      bool made = fs::create_directory(*it, ec);
-      if(!made && !fs::is_directory(*it, ec))
-      {
-        cleanup_dirs();
-        throw std::runtime_error("cannot create output directory " + it->string());
-      }
-      if(made) created_.push_back(*it);
-    }
-    if(!fs::is_directory(dir_, ec))
-      throw std::runtime_error("output path " + dir_.string() + " is not a directory");
-    std::random_device rd;
-    std::uniform_int_distribution<unsigned long long> dist;
-    std::ostringstream s;
-    s << std::hex << (dist(rd) & 0xffffffffffffULL);
-    tag_ = s.str();
-  }
-
-  Atomic_output_dir(const Atomic_output_dir&) = delete;
-  Atomic_output_dir& operator=(const Atomic_output_dir&) = delete;
-
-  /// \brief removes the temporaries if `commit()` was not called.
-  ~Atomic_output_dir() { abort(); }
-
-  /// \brief the target directory.
-  std::string directory() const { return dir_.string(); }
-
-  /// \brief the final path of file `name` (a plain file name) in the target directory.
-  std::string final_path(const std::string& name) const { return (dir_ / name).string(); }
-
-  /*!
-    \brief registers file `name` and returns the temporary path to write it to.
-    \throws std::invalid_argument if `name` is not a plain file name or is registered twice
-  */
-  std::string temporary_path(const std::string& name)
-  {
-    if(name.empty() || name == "." || name == ".." || name.find('/') != std::string::npos ||
-       name.find('\\') != std::string::npos)
-      throw std::invalid_argument("Atomic_output_dir: invalid file name '" + name + "'");
-    for(const auto& f : files_)
-      if(f.first == name)
-        throw std::invalid_argument("Atomic_output_dir: file '" + name + "' registered twice");
-    std::filesystem::path tmp = dir_ / ("." + name + ".swn-tmp-" + tag_);
-    files_.emplace_back(name, tmp);
-    return tmp.string();
-  }
-
-  /// \brief same as `temporary_path()`: write the file `name` to the returned path.
-  std::string path(const std::string& name) { return temporary_path(name); }
-
-  /*!
-    \brief writes file `name` through `writer(std::ostream&)` into its temporary.
-    \throws std::runtime_error if the file cannot be opened or the stream fails; exceptions of `writer` pass
-  */
-  template <class Writer>
-  void write(const std::string& name, Writer&& writer)
-  {
-    std::string tmp = temporary_path(name);
-    std::ofstream os(tmp, std::ios::binary | std::ios::trunc);
-    if(!os)
-      throw std::runtime_error("cannot open " + tmp + " for writing");
-    writer(static_cast<std::ostream&>(os));
-    os.flush();
-    if(!os)
-      throw std::runtime_error("write error on " + final_path(name));
-    os.close();
-    if(os.fail())
-      throw std::runtime_error("write error on " + final_path(name));
-  }
-
-  /// \brief renames every temporary into place. \throws std::runtime_error on failure
-  void commit()
-  {
-    for(auto& f : files_)
-    {
-      std::error_code ec;
-      std::filesystem::rename(f.second, dir_ / f.first, ec);
-      if(ec)
-        throw std::runtime_error("cannot move " + f.second.string() + " to " + final_path(f.first) + ": " + ec.message());
-      f.second.clear();
-    }
-    committed_ = true;
-    files_.clear();
-    created_.clear();
-  }
-
-  /// \brief removes the temporaries written so far (and directories created and left empty).
-  void abort() noexcept
-  {
-    if(committed_) return;
-    for(auto& f : files_)
-    {
-      std::error_code ec;
-      if(!f.second.empty()) std::filesystem::remove(f.second, ec);
-    }
-    files_.clear();
-    cleanup_dirs();
-  }
-
-  /// \brief the names registered so far (not yet committed).
-  std::vector<std::string> names() const
-  {
-    std::vector<std::string> r;
-    for(const auto& f : files_) r.push_back(f.first);
-    return r;
-  }
-
-private:
-  void cleanup_dirs() noexcept
-  {
-    for(auto it = created_.rbegin(); it != created_.rend(); ++it)
-    {
-      std::error_code ec;
-      std::filesystem::remove(*it, ec);  // only removes empty directories
-    }
-    created_.clear();
-  }
-
-  std::filesystem::path dir_;
-  std::string tag_;
-  std::vector<std::pair<std::string, std::filesystem::path> > files_;
-  std::vector<std::filesystem::path> created_;
-  bool committed_ = false;
-};
-
-/*!
-  \brief a minimal JSON value (null, bool, integer, number, string, array, object with insertion order) with
-  a writer, for `summary.json`.
-
-  Two ways to build a value:
-  - as a tree: `Json j = Json::object(); j["vertices"] = 12; j["files"] = Json::array();
-    j["files"].push_back("w.obj"); j.dump(std::cout);`
-  - as a stream of events on an empty value: `Json j; j.begin_object().key("vertices").value(12)
-    .key("files").begin_array().value("w.obj").end_array().end_object(); std::string s = j.str();`
-
-  Non-finite numbers are written as `null`; strings are escaped (`"`, `\`, control characters); bytes >= 0x80
-  are copied as is (UTF-8).
-*/
-class Json
-{
-public:
-  /// the elements of an array
-  typedef std::vector<Json> Array;
-  /// the members of an object, in insertion order
-  typedef std::vector<std::pair<std::string, Json> > Object;
-
-  /// copies the value only, not the state of the streaming interface
-  Json(const Json& o) : v_(o.v_) {}
-  /// moves the value only, not the state of the streaming interface
-  Json(Json&& o) noexcept : v_(std::move(o.v_)) {}
-  /// assigns the value only, not the state of the streaming interface
-  Json& operator=(const Json& o) { if(this != &o) v_ = o.v_; return *this; }
-  /// move-assigns the value only, not the state of the streaming interface
-  Json& operator=(Json&& o) noexcept { v_ = std::move(o.v_); return *this; }
-
-  /// \brief null
-  Json() : v_(std::monostate()) {}
-  /// null
-  Json(std::nullptr_t) : v_(std::monostate()) {}
-  /// `true` or `false`
-  Json(bool b) : v_(b) {}
-  /// a number (`null` if not finite)
-  Json(double d) : v_(d) {}
-  /// a number (`null` if not finite)
-  Json(float d) : v_(static_cast<double>(d)) {}
-  /// a string
-  Json(const char* s) : v_(std::string(s)) {}
-  /// a string
-  Json(const std::string& s) : v_(s) {}
-  /// a string
-  Json(std::string&& s) : v_(std::move(s)) {}
-  /// an array
-  Json(const Array& a) : v_(a) {}
-  /// an object
-  Json(const Object& o) : v_(o) {}
-  /// integers (any integral type except bool)
-  template <class T, typename std::enable_if<std::is_integral<T>::value && !std::is_same<T, bool>::value, int>::type = 0>
-  Json(T i)
-  {
-    if(std::is_signed<T>::value) v_ = static_cast<long long>(i);
-    else v_ = static_cast<unsigned long long>(i);
-  }
-  /// \brief an array of numbers or strings
-  template <class T>
-  Json(const std::vector<T>& values) : v_(Array())
-  {
-    for(const T& x : values) std::get<Array>(v_).push_back(Json(x));
-  }
-
-  /// \brief an empty object
-  static Json object() { Json j; j.v_ = Object(); return j; }
-  /// \brief an empty array
-  static Json array() { Json j; j.v_ = Array(); return j; }
-
-  /// true if the value is an object
-  bool is_object() const { return std::holds_alternative<Object>(v_); }
-  /// true if the value is an array
-  bool is_array() const { return std::holds_alternative<Array>(v_); }
-
-  /// \brief the member `key` of an object (created as null if missing; a null value becomes an object).
-  Json& operator[](const std::string& key)
-  {
-    if(std::holds_alternative<std::monostate>(v_)) v_ = Object();
-    if(!is_object()) throw std::logic_error("Json: operator[] on a non-object");
-    for(auto& kv : std::get<Object>(v_))
-      if(kv.first == key) return kv.second;
-    std::get<Object>(v_).emplace_back(key, Json());
-    return std::get<Object>(v_).back().second;
-  }
-
-  /// \brief appends to an array (a null value becomes an array).
-  void push_back(const Json& j)
-  {
-    if(std::holds_alternative<std::monostate>(v_)) v_ = Array();
-    if(!is_array()) throw std::logic_error("Json: push_back on a non-array");
-    std::get<Array>(v_).push_back(j);
-  }
-
-  /// \name Streaming interface
-  /// @{
-
-  /// \brief opens an object: the root (if this value is null and nothing is open), or a member/element of
-  /// the innermost open container.
-  Json& begin_object() { open(Json::object()); return *this; }
-  /// \brief opens an array (see `begin_object()`).
-  Json& begin_array() { open(Json::array()); return *this; }
-  /// \brief closes the innermost open object.
-  Json& end_object() { close(true); return *this; }
-  /// \brief closes the innermost open array.
-  Json& end_array() { close(false); return *this; }
-  /// \brief sets the key of the next member of the innermost open object.
-  Json& key(const std::string& k)
-  {
-    if(stack_.empty() || !stack_.back()->is_object())
-      throw std::logic_error("Json: key() outside of an object");
-    key_ = k;
-    has_key_ = true;
-    return *this;
-  }
-  /// \brief adds a value (anything a `Json` can be built from) to the innermost open container.
-  template <class T>
-  Json& value(const T& x) { insert(Json(x)); return *this; }
-  /// \brief the JSON text (see `dump()`).
-  std::string str(int indent = 2) const
-  {
-    if(!stack_.empty()) throw std::logic_error("Json: str() with an unclosed container");
-    return dump(indent);
-  }
-  /// @}
-
-  /// \brief writes the value; `indent` < 0 writes everything on one line.
-  void dump(std::ostream& os, int indent = 2) const
-  {
-    write(os, indent, 0);
-    if(indent >= 0) os << '\n';
-  }
-
-  /// \brief returns the JSON text.
-  std::string dump(int indent = 2) const
-  {
-    std::ostringstream s;
-    dump(s, indent);
-    return s.str();
-  }
-
-  /// \brief writes `s` as a JSON string literal.
-  static void write_string(std::ostream& os, const std::string& s)
-  {
-    os << '"';
-    for(char ch : s)
-    {
-      unsigned char c = static_cast<unsigned char>(ch);
-      switch(c)
-      {
-        case '"': os << "\\\""; break;
-        case '\\': os << "\\\\"; break;
-        case '\b': os << "\\b"; break;
-        case '\f': os << "\\f"; break;
-        case '\n': os << "\\n"; break;
-        case '\r': os << "\\r"; break;
-        case '\t': os << "\\t"; break;
-        default:
-          if(c < 0x20 || c == 0x7f)
-          {
-            static const char* hex = "0123456789abcdef";
-            os << "\\u00" << hex[c >> 4] << hex[c & 15];
-          }
-          else
-            os << ch;
-      }
-    }
-    os << '"';
-  }
-
-private:
-  Json* insert(Json&& j)
-  {
-    if(stack_.empty())
-    {
-      if(!std::holds_alternative<std::monostate>(v_))
-        throw std::logic_error("Json: a second root value");
-      v_ = std::move(j.v_);
-      return this;
-    }
-    Json* c = stack_.back();
-    if(c->is_object())
-    {
-      if(!has_key_) throw std::logic_error("Json: object member without key()");
-      has_key_ = false;
-      std::get<Object>(c->v_).emplace_back(key_, std::move(j));
-      return &std::get<Object>(c->v_).back().second;
-    }
-    std::get<Array>(c->v_).push_back(std::move(j));
-    return &std::get<Array>(c->v_).back();
-  }
-  void open(Json&& j) { stack_.push_back(insert(std::move(j))); }
-  void close(bool object)
-  {
-    if(stack_.empty() || stack_.back()->is_object() != object)
-      throw std::logic_error(object ? "Json: end_object() without matching begin_object()"
-                                    : "Json: end_array() without matching begin_array()");
-    if(object && has_key_) throw std::logic_error("Json: key() without value");
-    stack_.pop_back();
-  }
-
-  void newline(std::ostream& os, int indent, int depth) const
-  {
-    if(indent < 0) return;
-    os << '\n';
-    for(int i = 0; i < indent * depth; ++i) os << ' ';
-  }
-
-  void write(std::ostream& os, int indent, int depth) const
-  {
-    if(std::holds_alternative<std::monostate>(v_)) os << "null";
-    else if(auto b = std::get_if<bool>(&v_)) os << (*b ? "true" : "false");
-    else if(auto i = std::get_if<long long>(&v_)) os << *i;
-    else if(auto u = std::get_if<unsigned long long>(&v_)) os << *u;
-    else if(auto d = std::get_if<double>(&v_))
-    {
-      if(!std::isfinite(*d)) os << "null";
-      else
-      {
-        char buf[64];
-        auto r = std::to_chars(buf, buf + sizeof(buf), *d);
-        std::string s(buf, r.ptr);
-        os << s;
-      }
-    }
-    else if(auto s = std::get_if<std::string>(&v_)) write_string(os, *s);
-    else if(auto a = std::get_if<Array>(&v_))
-    {
-      if(a->empty()) { os << "[]"; return; }
-      os << '[';
-      for(std::size_t k = 0; k < a->size(); ++k)
-      {
-        if(k) os << ',';
-        newline(os, indent, depth + 1);
-        (*a)[k].write(os, indent, depth + 1);
-      }
-      newline(os, indent, depth);
-      os << ']';
-    }
-    else if(auto o = std::get_if<Object>(&v_))
-    {
-      if(o->empty()) { os << "{}"; return; }
-      os << '{';
-      for(std::size_t k = 0; k < o->size(); ++k)
-      {
-        if(k) os << ',';
-        newline(os, indent, depth + 1);
-        write_string(os, (*o)[k].first);
-        os << (indent >= 0 ? ": " : ":");
-        (*o)[k].second.write(os, indent, depth + 1);
-      }
-      newline(os, indent, depth);
-      os << '}';
-    }
-  }
-
-  std::variant<std::monostate, bool, long long, unsigned long long, double, std::string, Array, Object> v_;
-  // streaming interface state (root only)
-  std::vector<Json*> stack_;
-  std::string key_;
-  bool has_key_ = false;
-};
-
 } // namespace IO
 } // namespace Surface_winding_numbers
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_WINDING_NUMBERS_IO_WRITE_OUTPUTS_H
+#endif // CGAL_SWN_TOOL_IO_WRITE_OUTPUTS_H

@@ -3,8 +3,8 @@
 //
 // Error type of the file-format layer, and the small text-parsing helpers shared by the readers.
 
-#ifndef CGAL_SURFACE_WINDING_NUMBERS_IO_ERRORS_H
-#define CGAL_SURFACE_WINDING_NUMBERS_IO_ERRORS_H
+#ifndef CGAL_SWN_TOOL_IO_ERRORS_H
+#define CGAL_SWN_TOOL_IO_ERRORS_H
 
 #include <charconv>
 #include <cmath>
@@ -58,7 +58,7 @@ struct Input_error : std::runtime_error
   }
 };
 
-/// \cond SKIP_IN_MANUAL
+
 namespace internal {
 
 inline bool is_space(char c)
@@ -180,10 +180,10 @@ inline std::string lower(std::string_view s)
 }
 
 } // namespace internal
-/// \endcond
+
 
 } // namespace IO
 } // namespace Surface_winding_numbers
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_WINDING_NUMBERS_IO_ERRORS_H
+#endif // CGAL_SWN_TOOL_IO_ERRORS_H
