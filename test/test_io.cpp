@@ -11,6 +11,13 @@
 #include "swn_io/json.h"
 #include "swn_io/atomic_output_dir.h"
 
+#include <CGAL/Surface_winding_numbers/conforming_cut.h>
+#include <CGAL/surface_winding_numbers.h>
+
+#include <CGAL/Polygon_mesh_processing/locate.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
+
 #include <CGAL/IO/OFF.h>  // independent readers: cross-checks of ours
 #include <CGAL/IO/PLY.h>
 
@@ -28,6 +35,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #ifndef SWN_TEST_DATA_DIR
@@ -936,6 +944,227 @@ TEST(ConformingCut, DuplicatePointsAndDegenerateSegments)
   EXPECT_EQ(r.cut_new_vertices, 1u);
   EXPECT_EQ(r.skipped_segments, 1u);
   EXPECT_EQ(r.point_vertex[1], r.point_vertex[2]);
+}
+
+// ------------------------------------------------------------------------------------------------ library conforming_cut()
+
+namespace {
+
+namespace SWN = CGAL::Surface_winding_numbers;
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+// A closed curve around vertex 5 = (1, 1, 0) of grid4.off, crossing its six spokes at known parameters: the
+// point on spoke k is at (1 - t[k]) * p5 + t[k] * p(ring[k]). The ring is counter-clockwise seen from +z (the
+// side the faces face), so the inside of the curve, around vertex 5, is one higher than the outside.
+const std::size_t ring[6] = {6, 10, 9, 4, 0, 1};
+const double spoke_t[6] = {0.25, 0.5, 0.75, 0.375, 0.625, 0.5};
+
+template <class TriangleMesh>
+std::vector<PMP::Face_location<TriangleMesh, double> >
+hexagon_around_vertex_5(const TriangleMesh& tm, const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& v)
+{
+  std::vector<PMP::Face_location<TriangleMesh, double> > curve;
+  for(int k = 0; k <= 6; ++k)
+  {
+    auto h = halfedge(v[5], v[ring[k % 6]], tm).first;   // from vertex 5 to the ring
+    // close the loop with the first point located from the other side of its edge
+    curve.push_back(k < 6 ? PMP::locate_on_halfedge(h, spoke_t[k], tm)
+                          : PMP::locate_on_halfedge(opposite(h, tm), 1 - spoke_t[0], tm));
+  }
+  return curve;
+}
+
+// the vertices of grid4.off by index: vertex i is at (i % 4, i / 4, 0)
+template <class TriangleMesh>
+std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> grid_vertices(const TriangleMesh& tm)
+{
+  std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> v(num_vertices(tm));
+  for(auto x : vertices(tm))
+    v.at(std::size_t(get(CGAL::vertex_point, tm, x).x() + 4 * get(CGAL::vertex_point, tm, x).y())) = x;
+  return v;
+}
+
+// the boundary of the chain (arrivals minus departures) is zero everywhere, and the chain has `edges` edges
+template <class TriangleMesh, class ChainMap>
+void expect_closed_chain(const TriangleMesh& tm, const ChainMap& chain, int edges)
+{
+  std::map<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, int> boundary;
+  int count = 0;
+  for(auto e : CGAL::edges(tm))
+  {
+    const int c = get(chain, e);
+    boundary[target(halfedge(e, tm), tm)] += c;
+    boundary[source(halfedge(e, tm), tm)] -= c;
+    count += (c != 0);
+  }
+  for(const auto& b : boundary) EXPECT_EQ(b.second, 0);
+  EXPECT_EQ(count, edges);
+}
+
+} // namespace
+
+TEST(LibraryConformingCut, LoopAcrossSpokesAtKnownParameters)
+{
+  Mesh m;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(tdata + "grid4.off", m));
+  const std::vector<VI> v = grid_vertices(m);
+  const Point p5 = m.point(v[5]);
+  auto chain = m.add_property_map<Mesh::Edge_index, int>("e:chain", 0).first;
+  const std::vector<std::vector<PMP::Face_location<Mesh, double> > > curves{hexagon_around_vertex_5(m, v)};
+
+  const SWN::Conforming_cut_result<Mesh> r = SWN::conforming_cut(m, curves, chain);
+  ASSERT_TRUE(bool(r)) << r.message;
+  EXPECT_EQ(r.cut_vertices, 6u);
+  EXPECT_EQ(r.cut_faces, 12u);   // each of the six triangles around vertex 5: a triangle inside, a quad outside in two
+  EXPECT_EQ(r.segments, 6u);
+  EXPECT_EQ(r.refined_pieces, 0u);   // a closed loop has no endpoint
+  EXPECT_EQ(m.number_of_vertices(), 16u + 6u);
+  EXPECT_EQ(m.number_of_faces(), 18u + 12u);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(m));
+  EXPECT_TRUE(CGAL::is_triangle_mesh(m));
+  // the new vertices lie at the given points (exactly: the parameters are binary fractions), in curve order
+  ASSERT_EQ(r.curve_vertices.size(), 1u);
+  ASSERT_EQ(r.curve_vertices[0].size(), 7u);
+  EXPECT_EQ(r.curve_vertices[0][6], r.curve_vertices[0][0]);
+  for(int k = 0; k < 6; ++k)
+  {
+    EXPECT_EQ(std::size_t(r.curve_vertices[0][k]), 16u + k) << "new vertices are numbered in the order of the curve";
+    const Point& q = m.point(v[ring[k]]);
+    const double t = spoke_t[k];
+    EXPECT_EQ(m.point(r.curve_vertices[0][k]), Point((1 - t) * p5.x() + t * q.x(), (1 - t) * p5.y() + t * q.y(), 0.));
+  }
+  // the chain runs once around the loop, from each point to the next
+  expect_closed_chain(m, chain, 6);
+  for(int k = 0; k < 6; ++k)
+  {
+    const auto h = m.halfedge(r.curve_vertices[0][k], r.curve_vertices[0][k + 1]);
+    ASSERT_TRUE(h.is_valid());
+    std::vector<Mesh::Halfedge_index> along{h};
+    auto one = m.add_property_map<Mesh::Edge_index, int>("e:one", 0).first;
+    SWN::add_halfedges_to_chain(m, along, one);
+    EXPECT_EQ(chain[m.edge(h)], one[m.edge(h)]);
+    m.remove_property_map(one);
+  }
+  // the winding numbers: the six triangles around vertex 5 are inside (1), everything else outside (0)
+  auto labels = m.add_property_map<FI, int>("f:label", 0).first;
+  SWN::Solve_report report;
+  ASSERT_TRUE(CGAL::surface_winding_numbers(m, chain, labels, SWN::parameters::report(std::ref(report)))) << report.error;
+  double inside_area = 0;
+  for(FI f : m.faces())
+  {
+    const auto t = triple(m, f);
+    const bool around_5 = std::find(t.begin(), t.end(), std::size_t(5)) != t.end();
+    EXPECT_EQ(labels[f], around_5 ? 1 : 0) << "face " << f;
+    if(around_5)
+      inside_area += std::sqrt(CGAL::squared_area(m.point(VI(Mesh::size_type(t[0]))), m.point(VI(Mesh::size_type(t[1]))),
+                                                  m.point(VI(Mesh::size_type(t[2])))));
+  }
+  // triangle (p5, a, b) with a, b at t_a, t_b along two spokes of a half-unit triangle: area t_a * t_b / 2
+  double expected_area = 0;
+  for(int k = 0; k < 6; ++k) expected_area += spoke_t[k] * spoke_t[(k + 1) % 6] / 2;
+  EXPECT_NEAR(inside_area, expected_area, 1e-14);
+}
+
+TEST(LibraryConformingCut, PolyhedronAndExistingChain)
+{
+  // the same loop on a Polyhedron_3 with maps outside the mesh; the chain already holds a curve along
+  // spokes 5->6 and 5->4, which the cut splits: both halves keep its value
+  typedef CGAL::Polyhedron_3<K> Polyhedron;
+  typedef boost::graph_traits<Polyhedron>::edge_descriptor edge_descriptor;
+  Mesh sm;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(tdata + "grid4.off", sm));
+  Polyhedron p;
+  CGAL::copy_face_graph(sm, p);
+  const auto v = grid_vertices(p);
+  std::unordered_map<edge_descriptor, int> chain_values;
+  auto chain = boost::make_assoc_property_map(chain_values);
+  std::vector<boost::graph_traits<Polyhedron>::halfedge_descriptor> before{halfedge(v[6], v[5], p).first,
+                                                                         halfedge(v[5], v[4], p).first};
+  SWN::add_halfedges_to_chain(p, before, chain);
+  const std::vector<std::vector<PMP::Face_location<Polyhedron, double> > > curves{hexagon_around_vertex_5(p, v)};
+
+  const auto r = SWN::conforming_cut(p, curves, chain, SWN::parameters::refine_short_pieces(false));
+  ASSERT_TRUE(bool(r)) << r.message;
+  EXPECT_EQ(r.cut_vertices, 6u);
+  EXPECT_EQ(r.cut_faces, 12u);
+  EXPECT_EQ(p.size_of_vertices(), 22u);
+  EXPECT_EQ(p.size_of_facets(), 30u);
+  EXPECT_TRUE(p.is_valid() && p.is_pure_triangle());
+  // the old curve 6 -> 5 -> 4 now runs 6 -> new -> 5 -> new -> 4; the loop adds 6 edges
+  std::map<boost::graph_traits<Polyhedron>::vertex_descriptor, int> boundary;
+  int edges_with_chain = 0;
+  for(auto e : edges(p))
+  {
+    const int c = get(chain, e);
+    boundary[target(halfedge(e, p), p)] += c;
+    boundary[source(halfedge(e, p), p)] -= c;
+    edges_with_chain += (c != 0);
+  }
+  EXPECT_EQ(edges_with_chain, 4 + 6);
+  for(const auto& b : boundary)
+    EXPECT_EQ(b.second, b.first == v[6] ? -1 : (b.first == v[4] ? 1 : 0));
+  const auto on_old_curve = halfedge(r.curve_vertices[0][0], v[5], p);   // the point on spoke 5 -> 6, towards 5
+  ASSERT_TRUE(on_old_curve.second);
+  std::unordered_map<edge_descriptor, int> one_values;
+  auto one = boost::make_assoc_property_map(one_values);
+  std::vector<boost::graph_traits<Polyhedron>::halfedge_descriptor> along{on_old_curve.first};
+  SWN::add_halfedges_to_chain(p, along, one);
+  EXPECT_EQ(get(chain, edge(on_old_curve.first, p)), get(one, edge(on_old_curve.first, p)));
+}
+
+TEST(LibraryConformingCut, RefusedCurvesLeaveEverythingUnchanged)
+{
+  Mesh m;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(tdata + "grid4.off", m));
+  const std::vector<VI> v = grid_vertices(m);
+  auto chain = m.add_property_map<Mesh::Edge_index, int>("e:chain", 0).first;
+  chain[m.edge(m.halfedge(v[0], v[1]))] = 3;
+  const Mesh before = m;
+  auto unchanged = [&]() {
+    EXPECT_EQ(m.number_of_vertices(), before.number_of_vertices());
+    EXPECT_EQ(m.number_of_faces(), before.number_of_faces());
+    for(VI x : m.vertices()) EXPECT_EQ(m.point(x), before.point(x));
+    int nonzero = 0;
+    for(auto e : m.edges()) nonzero += (chain[e] != 0);
+    EXPECT_EQ(nonzero, 1);
+    EXPECT_EQ(chain[m.edge(m.halfedge(v[0], v[1]))], 3);
+  };
+  typedef PMP::Face_location<Mesh, double> Location;
+  auto on = [&](std::size_t a, std::size_t b, double t) { return PMP::locate_on_halfedge(m.halfedge(v[a], v[b]), t, m); };
+  auto at = [&](std::size_t a) { return PMP::locate_vertex<double>(v[a], m); };
+
+  // in face (0, 1, 5): the midpoint of 0-1 to the midpoint of 1-5, then vertex 1 to the midpoint of 5-0: they cross
+  std::vector<std::vector<Location> > crossing{{on(0, 1, 0.5), on(1, 5, 0.5)}, {at(1), on(5, 0, 0.5)}};
+  auto r = SWN::conforming_cut(m, crossing, chain);
+  EXPECT_FALSE(bool(r));
+  EXPECT_EQ(r.error, r.CROSSING_SEGMENTS);
+  EXPECT_EQ(r.curve, 1u);
+  EXPECT_EQ(r.index, 0u);
+  EXPECT_EQ(r.other_curve, 0u);
+  EXPECT_EQ(r.other_index, 0u);
+  unchanged();
+  // a point strictly inside a face
+  const FI f0 = *m.faces().begin();
+  std::vector<std::vector<Location> > inside{{at(0), Location(f0, {0.2, 0.3, 0.5})}};
+  r = SWN::conforming_cut(m, inside, chain);
+  EXPECT_EQ(r.error, r.INVALID_LOCATION);
+  EXPECT_EQ(r.index, 1u);
+  unchanged();
+  // two points on no common face (the second segment of the curve)
+  std::vector<std::vector<Location> > apart{{on(0, 1, 0.5), at(5), at(15)}};
+  r = SWN::conforming_cut(m, apart, chain);
+  EXPECT_EQ(r.error, r.NO_COMMON_FACE);
+  EXPECT_EQ(r.curve, 0u);
+  EXPECT_EQ(r.index, 1u);
+  unchanged();
+  // an open curve ending inside: its single edge is refined into 8 (as the tool does by default)
+  std::vector<std::vector<Location> > short_piece{{at(5), at(6)}};
+  r = SWN::conforming_cut(m, short_piece, chain);
+  ASSERT_TRUE(bool(r));
+  EXPECT_EQ(r.cut_vertices, 0u);
+  EXPECT_EQ(r.refined_pieces, 1u);
+  EXPECT_EQ(r.refinement_vertices, 7u);
+  EXPECT_EQ(r.refinement_faces, 14u);
 }
 
 // ------------------------------------------------------------------------------------------------ writers

@@ -159,7 +159,7 @@ Consecutive points are joined by a straight segment inside a face or along an ed
   edges, \f$ k = \max(1, \lfloor \log_2 \lfloor N / n \rfloor \rfloor) \f$ with \f$ N \f$ =
   `minimum_piece_edges`, the new vertices joined to the opposite vertices of the incident faces. The method
   takes interior endpoints out of its jump-Laplace system, so a piece of one edge between two of them would
-  vanish (user manual, \ref SWNAPIChain).
+  vanish (user manual, \ref SWNDefChains and \ref SWNAPIIO).
 
 Split edges keep their chain value (both halves), so `chain` may already hold curves. Faces that keep
 their descriptor: every face not cut, and one piece of each cut face (the piece with the vertex
