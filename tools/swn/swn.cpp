@@ -71,8 +71,10 @@ static const char* usage =
   "  swn data/swn-demo/DoubleTorusWithLoops.obj --output-dir out/dt --verbose\n"
   "  swn data/swn-demo/bunny.obj --curve data/swn-demo/bunny-brokenheart.txt --output-dir out/bunny\n"
   "\n"
-  "environment: OMP_THREAD_LIMIT and OPENBLAS_NUM_THREADS limit the threads of CHOLMOD and OpenBLAS, and\n"
-  "GLIBC_TUNABLES tunes malloc; the tool does not set them\n\n"
+  "environment: the tool sets no process-wide setting. swn-tuned, next to swn, runs it with one thread per\n"
+  "call in CHOLMOD and OpenBLAS (OMP_THREAD_LIMIT=1, OPENBLAS_NUM_THREADS=1) and malloc's huge pages and\n"
+  "freed-memory reuse (GLIBC_TUNABLES), keeping what is already set: DoubleTorusWithLoops 0.50 s instead\n"
+  "of 0.83 s on 2 shared cores (medians of 15 alternating runs)\n\n"
   "exit status: 0 success, 1 solver or output failure, 2 bad input (the message names file and line)\n";
 
 namespace {
