@@ -21,6 +21,27 @@ namespace CGAL {
 namespace Surface_winding_numbers {
 namespace IO {
 
+namespace internal {
+
+// writes the file `path` through `writer(std::ostream&)`; `shown` is the name used in error messages
+template <class Writer>
+void write_to_path(const std::string& path, Writer&& writer, const std::string& shown = std::string())
+{
+  const std::string& name = shown.empty() ? path : shown;
+  std::ofstream os(path, std::ios::binary | std::ios::trunc);
+  if(!os)
+    throw std::runtime_error("cannot open " + path + " for writing");
+  writer(static_cast<std::ostream&>(os));
+  os.flush();
+  if(!os)
+    throw std::runtime_error("write error on " + name);
+  os.close();
+  if(os.fail())
+    throw std::runtime_error("write error on " + name);
+}
+
+} // namespace internal
+
 /*!
   \brief an output directory written all-or-nothing.
 
@@ -105,17 +126,7 @@ public:
   template <class Writer>
   void write(const std::string& name, Writer&& writer)
   {
-    std::string tmp = temporary_path(name);
-    std::ofstream os(tmp, std::ios::binary | std::ios::trunc);
-    if(!os)
-      throw std::runtime_error("cannot open " + tmp + " for writing");
-    writer(static_cast<std::ostream&>(os));
-    os.flush();
-    if(!os)
-      throw std::runtime_error("write error on " + final_path(name));
-    os.close();
-    if(os.fail())
-      throw std::runtime_error("write error on " + final_path(name));
+    internal::write_to_path(temporary_path(name), writer, final_path(name));
   }
 
   /// \brief renames every temporary into place. \throws std::runtime_error on failure

@@ -11,6 +11,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <istream>
 #include <limits>
 #include <stdexcept>
@@ -169,6 +171,29 @@ inline std::string_view strip_comment(std::string_view s)
 {
   std::size_t p = s.find('#');
   return p == std::string_view::npos ? s : s.substr(0, p);
+}
+
+/// Parses the directive `#offset K` (its tokens), failing on the reader's line if it is malformed.
+inline long long offset_directive(const std::vector<std::string_view>& tok, const Line_reader& lr)
+{
+  long long k;
+  if(tok.size() != 2 || !parse_int(tok[1], k))
+    lr.fail("malformed '#offset' directive (expected '#offset INTEGER')");
+  return k;
+}
+
+/// Opens an input file in binary mode; `what` names the kind of file ("a mesh file").
+inline std::ifstream open_input_file(const std::string& filename, const std::string& what)
+{
+  std::error_code ec;
+  if(!std::filesystem::exists(filename, ec))
+    throw Input_error(filename, 0, "no such file");
+  if(std::filesystem::is_directory(filename, ec))
+    throw Input_error(filename, 0, "is a directory, not " + what);
+  std::ifstream is(filename, std::ios::binary);
+  if(!is)
+    throw Input_error(filename, 0, "cannot open file for reading");
+  return is;
 }
 
 inline std::string lower(std::string_view s)

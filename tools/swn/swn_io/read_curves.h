@@ -16,7 +16,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -198,12 +197,7 @@ Curve_set read_authors_curves(std::istream& is, const std::string& file, const C
     std::string_view kw = tok[0];
     if(kw[0] == '#')
     {
-      if(kw == "#offset")
-      {
-        if(tok.size() != 2)
-          lr.fail("malformed '#offset' directive (expected '#offset INTEGER')");
-        offset = int_token(tok[1], lr);
-      }
+      if(kw == "#offset") offset = offset_directive(tok, lr);
       continue;
     }
     if(kw == "v")
@@ -298,8 +292,11 @@ inline std::size_t vertex_point(Curve_set& cs, std::map<std::size_t, std::size_t
   return ins.first->second;
 }
 
-template <class Point>
-Curve_set read_polyline_curves(std::istream& is, const std::string& file, const CGAL::Surface_mesh<Point>& mesh)
+// Reads a curve file of 0-based vertex records, one per line ('#' starts a comment): `record(tok, lr, cs,
+// vertex)` reads the tokens of a line into `cs`, where `vertex(token)` parses a vertex index, checks it and
+// returns its point in `cs` (one point per vertex).
+template <class Record>
+Curve_set read_vertex_records(std::istream& is, const std::string& file, std::size_t nv, Record record)
 {
   Curve_set cs;
   cs.file = file;
@@ -307,23 +304,16 @@ Curve_set read_polyline_curves(std::istream& is, const std::string& file, const 
   std::string line;
   std::vector<std::string_view> tok;
   std::map<std::size_t, std::size_t> index;
-  const std::size_t nv = mesh.number_of_vertices();
+  auto vertex = [&](std::string_view token) {
+    const long long i = int_token(token, lr);
+    if(i < 0 || static_cast<unsigned long long>(i) >= nv)
+      lr.fail("vertex index " + std::to_string(i) + " is out of range (" + std::to_string(nv) + " vertices, 0-based)");
+    return vertex_point(cs, index, static_cast<std::size_t>(i), lr.line_number());
+  };
   while(lr.next(line))
   {
     split_tokens(strip_comment(line), tok);
-    if(tok.empty()) continue;
-    if(tok.size() < 2)
-      lr.fail("a polyline needs at least two vertex indices");
-    std::size_t prev = 0;
-    for(std::size_t k = 0; k < tok.size(); ++k)
-    {
-      long long i = int_token(tok[k], lr);
-      if(i < 0 || static_cast<unsigned long long>(i) >= nv)
-        lr.fail("vertex index " + std::to_string(i) + " is out of range (" + std::to_string(nv) + " vertices, 0-based)");
-      std::size_t pt = vertex_point(cs, index, static_cast<std::size_t>(i), lr.line_number());
-      if(k > 0) cs.segments.push_back(Curve_segment{prev, pt, lr.line_number()});
-      prev = pt;
-    }
+    if(!tok.empty()) record(tok, lr, cs, vertex);
   }
   if(is.bad())
     throw Input_error(file, 0, "read error");
@@ -331,47 +321,45 @@ Curve_set read_polyline_curves(std::istream& is, const std::string& file, const 
 }
 
 template <class Point>
+Curve_set read_polyline_curves(std::istream& is, const std::string& file, const CGAL::Surface_mesh<Point>& mesh)
+{
+  return read_vertex_records(is, file, mesh.number_of_vertices(),
+                             [](const std::vector<std::string_view>& tok, const Line_reader& lr, Curve_set& cs, auto& vertex) {
+    if(tok.size() < 2)
+      lr.fail("a polyline needs at least two vertex indices");
+    std::size_t prev = vertex(tok[0]);
+    for(std::size_t k = 1; k < tok.size(); ++k)
+    {
+      const std::size_t pt = vertex(tok[k]);
+      cs.segments.push_back(Curve_segment{prev, pt, lr.line_number()});
+      prev = pt;
+    }
+  });
+}
+
+template <class Point>
 Curve_set read_halfedge_curves(std::istream& is, const std::string& file, const CGAL::Surface_mesh<Point>& mesh)
 {
   typedef CGAL::Surface_mesh<Point> Mesh;
-  Curve_set cs;
-  cs.file = file;
-  Line_reader lr(is, file);
-  std::string line;
-  std::vector<std::string_view> tok;
-  std::map<std::size_t, std::size_t> index;
-  const std::size_t nv = mesh.number_of_vertices();
-  while(lr.next(line))
-  {
-    split_tokens(strip_comment(line), tok);
-    if(tok.empty()) continue;
+  return read_vertex_records(is, file, mesh.number_of_vertices(),
+                             [&](const std::vector<std::string_view>& tok, const Line_reader& lr, Curve_set& cs, auto& vertex) {
     if(tok[0] != "h")
       lr.fail("unknown record " + quote(tok[0]) + " (expected 'h SRC DST [MULTIPLICITY]')");
     if(tok.size() < 3)
       lr.fail("an 'h' record needs a source and a target vertex");
     if(tok.size() > 4)
       lr.fail("trailing junk " + quote(tok[4]) + " after the multiplicity");
-    long long s = int_token(tok[1], lr), t = int_token(tok[2], lr), m = 1;
-    if(tok.size() == 4)
-    {
-      m = int_token(tok[3], lr);
-      if(m < 1 || m > 1000)
-        lr.fail("multiplicity " + std::to_string(m) + " is not in [1, 1000]");
-    }
-    for(long long v : {s, t})
-      if(v < 0 || static_cast<unsigned long long>(v) >= nv)
-        lr.fail("vertex index " + std::to_string(v) + " is out of range (" + std::to_string(nv) + " vertices, 0-based)");
+    const long long m = tok.size() == 4 ? int_token(tok[3], lr) : 1;
+    if(m < 1 || m > 1000)
+      lr.fail("multiplicity " + std::to_string(m) + " is not in [1, 1000]");
+    const std::size_t a = vertex(tok[1]), b = vertex(tok[2]);
+    const std::size_t s = cs.points[a].element, t = cs.points[b].element;
     typename Mesh::Vertex_index vs(static_cast<typename Mesh::size_type>(s)), vt(static_cast<typename Mesh::size_type>(t));
     if(s == t || !CGAL::halfedge(vs, vt, mesh).second)
       lr.fail("halfedge " + std::to_string(s) + " -> " + std::to_string(t) + " is not an edge of the mesh");
-    std::size_t a = vertex_point(cs, index, static_cast<std::size_t>(s), lr.line_number());
-    std::size_t b = vertex_point(cs, index, static_cast<std::size_t>(t), lr.line_number());
     for(long long k = 0; k < m; ++k)
       cs.segments.push_back(Curve_segment{a, b, lr.line_number()});
-  }
-  if(is.bad())
-    throw Input_error(file, 0, "read error");
-  return cs;
+  });
 }
 
 } // namespace internal
@@ -421,14 +409,7 @@ template <class Point>
 Curve_set read_curve_file(const std::string& filename, const CGAL::Surface_mesh<Point>& mesh,
                           Curve_file_format format = Curve_file_format::AUTO)
 {
-  std::error_code ec;
-  if(!std::filesystem::exists(filename, ec))
-    throw Input_error(filename, 0, "no such file");
-  if(std::filesystem::is_directory(filename, ec))
-    throw Input_error(filename, 0, "is a directory, not a curve file");
-  std::ifstream is(filename, std::ios::binary);
-  if(!is)
-    throw Input_error(filename, 0, "cannot open file for reading");
+  std::ifstream is = internal::open_input_file(filename, "a curve file");
   return read_curves(is, filename, mesh, format);
 }
 

@@ -113,14 +113,7 @@ inline std::string mesh_file_format(const std::string& filename)
 template <class Point>
 Mesh_read_info read_mesh(const std::string& filename, CGAL::Surface_mesh<Point>& mesh)
 {
-  std::error_code ec;
-  if(!std::filesystem::exists(filename, ec))
-    throw Input_error(filename, 0, "no such file");
-  if(std::filesystem::is_directory(filename, ec))
-    throw Input_error(filename, 0, "is a directory, not a mesh file");
-  std::ifstream is(filename, std::ios::binary);
-  if(!is)
-    throw Input_error(filename, 0, "cannot open file for reading");
+  std::ifstream is = internal::open_input_file(filename, "a mesh file");
   std::string fmt = mesh_file_format(filename);
   if(fmt != "obj" && fmt != "off" && fmt != "ply" && fmt != "stl")
     throw Input_error(filename, 0, "unknown mesh file extension " + internal::quote(fmt) + " (use .obj, .off, .ply or .stl)");

@@ -77,13 +77,7 @@ inline void read_OBJ_soup(std::istream& is, const std::string& file, Triangle_so
     std::string_view kw = tok[0];
     if(kw[0] == '#')
     {
-      if(kw == "#offset")
-      {
-        long long k;
-        if(tok.size() != 2 || !parse_int(tok[1], k))
-          lr.fail("malformed '#offset' directive (expected '#offset INTEGER')");
-        offset = k;
-      }
+      if(kw == "#offset") offset = offset_directive(tok, lr);
       continue;
     }
     if(kw == "v")
@@ -158,30 +152,22 @@ inline void read_OBJ_soup(std::istream& is, const std::string& file, Triangle_so
   if(is.bad())
     throw Input_error(file, 0, "read error");
 
+  // the records are resolved once every vertex and face is known
+  auto resolve = [&](const Pending& p, std::size_t size, const char* what, const char* record, const char* unit) {
+    std::vector<std::size_t> r;
+    for(long long i : p.idx)
+    {
+      if(static_cast<std::size_t>(i) >= size)
+        throw Input_error(file, p.line, std::string(what) + " index " + std::to_string(i) + " (0-based) in '" + record +
+                                            "' record is out of range (" + std::to_string(size) + " " + unit + ")");
+      r.push_back(static_cast<std::size_t>(i));
+    }
+    return r;
+  };
   for(const Pending& p : polylines)
-  {
-    Obj_polyline pl; pl.line = p.line;
-    for(long long i : p.idx)
-    {
-      if(static_cast<std::size_t>(i) >= soup.points.size())
-        throw Input_error(file, p.line, "vertex index " + std::to_string(i) + " (0-based) in 'l' record is out of range (" +
-                                            std::to_string(soup.points.size()) + " vertices)");
-      pl.vertices.push_back(static_cast<std::size_t>(i));
-    }
-    info.obj_polylines.push_back(std::move(pl));
-  }
+    info.obj_polylines.push_back(Obj_polyline{resolve(p, soup.points.size(), "vertex", "l", "vertices"), p.line});
   for(const Pending& p : chains)
-  {
-    Obj_dual_chain dc; dc.line = p.line;
-    for(long long i : p.idx)
-    {
-      if(static_cast<std::size_t>(i) >= soup.triangles.size())
-        throw Input_error(file, p.line, "face index " + std::to_string(i) + " (0-based) in 'c' record is out of range (" +
-                                            std::to_string(soup.triangles.size()) + " faces)");
-      dc.faces.push_back(static_cast<std::size_t>(i));
-    }
-    info.obj_dual_chains.push_back(std::move(dc));
-  }
+    info.obj_dual_chains.push_back(Obj_dual_chain{resolve(p, soup.triangles.size(), "face", "c", "faces"), p.line});
 }
 
 } // namespace internal

@@ -6,6 +6,8 @@
 #ifndef CGAL_SWN_TOOL_IO_WRITE_OUTPUTS_H
 #define CGAL_SWN_TOOL_IO_WRITE_OUTPUTS_H
 
+#include "swn_io/atomic_output_dir.h"
+
 #include <CGAL/IO/Color.h>
 #include <CGAL/IO/io.h>
 #include <CGAL/Surface_mesh.h>
@@ -120,40 +122,36 @@ auto value_at(const Map& map, Key k)
     return get(map, k);
 }
 
-template <class Mesh, class LabelMap>
-std::vector<int> face_ints(const Mesh& m, const LabelMap& labels)
+// the values of `map` on `range` (the faces or the edges of `m`) as ints; a std::vector is taken as is
+// (an empty one too, if `empty_ok`)
+template <class Range, class Map>
+std::vector<int> ints_on(const Range& range, std::size_t size, const Map& map, bool empty_ok, const char* expected)
 {
-  if constexpr(is_std_vector<LabelMap>::value)
+  if constexpr(is_std_vector<Map>::value)
   {
-    if(!labels.empty() && labels.size() != m.number_of_faces())
-      throw std::invalid_argument("one label per face expected");
-    return std::vector<int>(labels.begin(), labels.end());
+    if(map.size() != size && !(empty_ok && map.empty()))
+      throw std::invalid_argument(expected);
+    return std::vector<int>(map.begin(), map.end());
   }
   else
   {
     std::vector<int> r;
-    r.reserve(m.number_of_faces());
-    for(auto f : m.faces()) r.push_back(static_cast<int>(value_at(labels, f)));
+    r.reserve(size);
+    for(auto k : range) r.push_back(static_cast<int>(value_at(map, k)));
     return r;
   }
+}
+
+template <class Mesh, class LabelMap>
+std::vector<int> face_ints(const Mesh& m, const LabelMap& labels)
+{
+  return ints_on(m.faces(), m.number_of_faces(), labels, true, "one label per face expected");
 }
 
 template <class Mesh, class ChainMap>
 std::vector<int> edge_ints(const Mesh& m, const ChainMap& chain)
 {
-  if constexpr(is_std_vector<ChainMap>::value)
-  {
-    if(chain.size() != m.number_of_edges())
-      throw std::invalid_argument("one chain value per edge expected");
-    return std::vector<int>(chain.begin(), chain.end());
-  }
-  else
-  {
-    std::vector<int> r;
-    r.reserve(m.number_of_edges());
-    for(auto e : m.edges()) r.push_back(static_cast<int>(value_at(chain, e)));
-    return r;
-  }
+  return ints_on(m.edges(), m.number_of_edges(), chain, false, "one chain value per edge expected");
 }
 
 // per-face winding numbers: a std::vector is taken as per-face values; anything else is read per corner
@@ -184,21 +182,6 @@ std::vector<double> face_doubles(const Mesh& m, const WindingMap& w)
     }
     return r;
   }
-}
-
-template <class Writer>
-void write_to_path(const std::string& path, Writer&& writer)
-{
-  std::ofstream os(path, std::ios::binary | std::ios::trunc);
-  if(!os)
-    throw std::runtime_error("cannot open " + path + " for writing");
-  writer(static_cast<std::ostream&>(os));
-  os.flush();
-  if(!os)
-    throw std::runtime_error("write error on " + path);
-  os.close();
-  if(os.fail())
-    throw std::runtime_error("write error on " + path);
 }
 
 } // namespace internal
