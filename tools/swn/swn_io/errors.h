@@ -6,6 +6,7 @@
 #ifndef CGAL_SWN_TOOL_IO_ERRORS_H
 #define CGAL_SWN_TOOL_IO_ERRORS_H
 
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <cstddef>
@@ -180,6 +181,38 @@ inline long long offset_directive(const std::vector<std::string_view>& tok, cons
   if(tok.size() != 2 || !parse_int(tok[1], k))
     lr.fail("malformed '#offset' directive (expected '#offset INTEGER')");
   return k;
+}
+
+/// Reads the next record of an OBJ-like file into `tok` (a keyword and its arguments), skipping blank lines
+/// and comments and applying the `#offset K` directives to `offset`. Returns false at the end of the file.
+inline bool next_record(Line_reader& lr, std::string& line, std::vector<std::string_view>& tok, long long& offset)
+{
+  while(lr.next(line))
+  {
+    split_tokens(line, tok);
+    if(tok.empty()) continue;
+    if(tok[0][0] != '#') return true;
+    if(tok[0] == "#offset") offset = offset_directive(tok, lr);
+  }
+  return false;
+}
+
+/// Parses the coordinates of a vertex record, `tok[first]` and on: the first three are returned, the others
+/// (colours, weights) must be numbers too.
+inline std::array<double, 3> vertex_coordinates(const std::vector<std::string_view>& tok, std::size_t first,
+                                                const Line_reader& lr)
+{
+  if(tok.size() < first + 3)
+    lr.fail("vertex record with fewer than 3 coordinates");
+  std::array<double, 3> p;
+  for(std::size_t k = first; k < tok.size(); ++k)
+  {
+    double x;
+    if(!parse_double(tok[k], x))
+      lr.fail("cannot parse number " + quote(tok[k]) + " in vertex record");
+    if(k < first + 3) p[k - first] = x;
+  }
+  return p;
 }
 
 /// Opens an input file in binary mode; `what` names the kind of file ("a mesh file").

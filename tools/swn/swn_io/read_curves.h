@@ -190,16 +190,9 @@ Curve_set read_authors_curves(std::istream& is, const std::string& file, const C
   std::vector<Pending> pending;
   const std::size_t nv = mesh.number_of_vertices(), nf = mesh.number_of_faces();
 
-  while(lr.next(line))
+  while(next_record(lr, line, tok, offset))
   {
-    split_tokens(line, tok);
-    if(tok.empty()) continue;
     std::string_view kw = tok[0];
-    if(kw[0] == '#')
-    {
-      if(kw == "#offset") offset = offset_directive(tok, lr);
-      continue;
-    }
     if(kw == "v")
     {
       if(tok.size() < 2) lr.fail("'v' record without a vertex index");

@@ -70,30 +70,14 @@ inline void read_OBJ_soup(std::istream& is, const std::string& file, Triangle_so
   struct Pending { std::vector<long long> idx; std::size_t line; };
   std::vector<Pending> polylines, chains;
 
-  while(lr.next(line))
+  while(next_record(lr, line, tok, offset))
   {
-    split_tokens(line, tok);
-    if(tok.empty()) continue;
     std::string_view kw = tok[0];
-    if(kw[0] == '#')
-    {
-      if(kw == "#offset") offset = offset_directive(tok, lr);
-      continue;
-    }
     if(kw == "v")
     {
-      if(tok.size() < 4)
-        lr.fail("vertex record with fewer than 3 coordinates");
       if(tok.size() > 8)
         lr.fail("vertex record with too many values (trailing junk?)");
-      std::array<double, 3> p;
-      for(std::size_t k = 1; k < tok.size(); ++k)
-      {
-        double x;
-        if(!parse_double(tok[k], x))
-          lr.fail("cannot parse number " + quote(tok[k]) + " in vertex record");
-        if(k <= 3) p[k - 1] = x;
-      }
+      const std::array<double, 3> p = vertex_coordinates(tok, 1, lr);
       check_finite_point(p, file, lr.line_number(), soup.points.size());
       soup.points.push_back(p);
       soup.point_lines.push_back(lr.line_number());

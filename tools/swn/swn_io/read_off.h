@@ -85,16 +85,7 @@ inline void read_OFF_soup(std::istream& is, const std::string& file, Triangle_so
     if(!next_content())
       throw Input_error(file, lr.line_number(), "unexpected end of file: expected " + std::to_string(nv) +
                                                      " vertices, found " + std::to_string(i));
-    if(tok.size() < 3)
-      lr.fail("vertex record with fewer than 3 coordinates");
-    std::array<double, 3> p;
-    for(std::size_t k = 0; k < tok.size(); ++k)
-    {
-      double x;
-      if(!parse_double(tok[k], x))
-        lr.fail("cannot parse number " + quote(tok[k]) + " in vertex record");
-      if(k < 3) p[k] = x;
-    }
+    const std::array<double, 3> p = vertex_coordinates(tok, 0, lr);
     check_finite_point(p, file, lr.line_number(), soup.points.size());
     soup.points.push_back(p);
     soup.point_lines.push_back(lr.line_number());
