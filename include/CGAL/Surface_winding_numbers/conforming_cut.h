@@ -125,8 +125,8 @@ struct Cut_face
 struct Cut_segment
 {
   std::size_t a, b, curve, index;
-  std::size_t edge;   // along an edge: its Cut_edge, or none (no point on it; `along` is then used)
-  std::size_t face;   // inside a face: its Cut_face, or none
+  std::size_t edge;   // along an edge with points on it: its Cut_edge; none along another edge, or inside a face
+  std::size_t face;   // inside a face: its Cut_face; none along an edge
 };
 
 } // namespace internal
@@ -162,8 +162,8 @@ Consecutive points are joined by a straight segment inside a face or along an ed
   vanish (user manual, \ref SWNDefChains and \ref SWNAPIIO).
 
 Split edges keep their chain value (both halves), so `chain` may already hold curves. Faces that keep
-their descriptor: every face not cut, and one piece of each cut face (the piece with the vertex
-`source(halfedge(f, tm), tm)` of the input face `f`); other pieces and the vertices are added with
+their descriptor: every face not cut, and one piece of each cut face `f`, the triangle with the vertex
+`v = target(halfedge(f, tm), tm)` of the input (and `target(halfedge(f, tm), tm)` is still `v`); other pieces and the vertices are added with
 `add_face()` and `add_vertex()`, so with `CGAL::Surface_mesh` (without removed elements) the indices of the
 input are kept and the new ones follow: the vertices of the cut in the order of their first use by the
 curves, the faces of the cut in the order of `faces(tm)`, then those of the refinement.
@@ -171,7 +171,8 @@ curves, the faces of the cut in the order of `faces(tm)`, then those of the refi
 Nothing is changed when the curves are refused: a point strictly inside a face, two consecutive points on
 no common face, or two segments crossing inside a face (the result tells which).
 
-\tparam TriangleMesh a model of `MutableFaceGraph` and `FaceListGraph` whose faces are triangles
+\tparam TriangleMesh a model of `MutableFaceGraph`, `FaceListGraph`, `EdgeListGraph` and `VertexListGraph` whose
+        faces are triangles
 \tparam CurveRange a range of ranges of `std::pair<boost::graph_traits<TriangleMesh>::%face_descriptor, std::array<FT, 3> >`,
         `FT` a number type convertible to the field type of the kernel
 \tparam ChainMap a model of `ReadWritePropertyMap` with key `boost::graph_traits<TriangleMesh>::%edge_descriptor`
@@ -207,7 +208,7 @@ no common face, or two segments crossing inside a face (the result tells which).
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
-\pre `tm` is a triangle mesh; the coordinates of every location are nonnegative and sum to 1.
+\pre `tm` is a triangle mesh, and the coordinates of every location sum to 1 (negative ones are refused).
 \returns what was done: the vertex of every curve point and the sizes of the cut and of the refinement,
 or why the curves were refused; converts to `true` if the cut was done.
 */
@@ -482,7 +483,8 @@ conforming_cut(TriangleMesh& tm, const CurveRange& curves, ChainMap chain,
       const auto& cf = cut_faces[get(face_of, f) - 1];
       chords.clear();
       for(std::size_t s : cf.chords) chords.emplace_back(points[segments[s].a].vertex, points[segments[s].b].vertex);
-      internal::cut_and_triangulate_face(tm, vpm, f, cf.corner, chords, line, next_line);
+      // f keeps the piece with target(halfedge(f)), the first vertex of f for meshes read from files
+      internal::cut_and_triangulate_face(tm, vpm, f, cf.corner, chords, cf.corner[1], line, next_line);
     }
   }
   // the curves on the edges

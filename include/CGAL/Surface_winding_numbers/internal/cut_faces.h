@@ -58,8 +58,8 @@ face_loop(typename boost::graph_traits<TriangleMesh>::face_descriptor f, const T
   a corner where its two sides lie on different lines. Pieces are triangulated by clipping ears at corners
   (so no triangle has three collinear vertices), the ear with the largest smallest angle first, and never
   an ear that would leave fewer than three corners. The descriptor `f` stays with the piece, and in the
-  end the triangle, that has `corner[0]`; `target(halfedge(f, tm))` is `corner[0]`. New faces are added
-  with `add_face()` (appended, for `Surface_mesh`).
+  end the triangle, that has the corner `keep`, and `target(halfedge(f, tm))` is `keep`. New faces are
+  added with `add_face()` (appended, for `Surface_mesh`).
 */
 template <class TriangleMesh, class VertexPointMap, class LineMap>
 void cut_and_triangulate_face(
@@ -67,7 +67,7 @@ void cut_and_triangulate_face(
   const std::array<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, 3>& corner,
   const std::vector<std::pair<typename boost::graph_traits<TriangleMesh>::vertex_descriptor,
                               typename boost::graph_traits<TriangleMesh>::vertex_descriptor> >& chords,
-  LineMap line, int& next_line)
+  typename boost::graph_traits<TriangleMesh>::vertex_descriptor keep, LineMap line, int& next_line)
 {
   typedef boost::graph_traits<TriangleMesh> Traits;
   typedef typename Traits::halfedge_descriptor halfedge_descriptor;
@@ -105,14 +105,14 @@ void cut_and_triangulate_face(
     CGAL_assertion(piece != Traits::null_face());
     if(piece == Traits::null_face() || target(next(hu, tm), tm) == v || target(next(hv, tm), tm) == u)
       continue;   // already an edge of the piece
-    // split_face(h1, h2) leaves face(h1) the part from target(h2) to target(h1): f keeps corner[0]
-    bool corner_on_v_to_u = (v == corner[0]);
-    for(halfedge_descriptor g = next(hv, tm); !corner_on_v_to_u; g = next(g, tm))
+    // split_face(h1, h2) leaves face(h1) the part from target(h2) to target(h1): f keeps `keep`
+    bool keep_on_v_to_u = (v == keep);
+    for(halfedge_descriptor g = next(hv, tm); !keep_on_v_to_u; g = next(g, tm))
     {
-      corner_on_v_to_u = (target(g, tm) == corner[0]);
+      keep_on_v_to_u = (target(g, tm) == keep);
       if(g == hu) break;
     }
-    const bool swap = (piece == f && !corner_on_v_to_u);
+    const bool swap = (piece == f && !keep_on_v_to_u);
     const halfedge_descriptor h = CGAL::Euler::split_face(swap ? hv : hu, swap ? hu : hv, tm);
     put(line, h, next_line);
     put(line, opposite(h, tm), next_line);
@@ -153,7 +153,7 @@ void cut_and_triangulate_face(
       }
       if(best == n) best = 0;   // cannot happen for a convex polygon with three corners or more
       // the diagonal from source(at(best - 1)) to target(at(best)) cuts the ear off
-      const bool ear_keeps_f = (piece == f && source(at(best), tm) == corner[0]);
+      const bool ear_keeps_f = (piece == f && source(at(best), tm) == keep);
       const halfedge_descriptor h1 = at(best + n - 2), h2 = at(best);
       const halfedge_descriptor h = ear_keeps_f ? CGAL::Euler::split_face(h2, h1, tm) : CGAL::Euler::split_face(h1, h2, tm);
       put(line, h, next_line);
@@ -164,7 +164,7 @@ void cut_and_triangulate_face(
   }
 
   for(halfedge_descriptor g : CGAL::halfedges_around_face(halfedge(f, tm), tm))
-    if(target(g, tm) == corner[0]) { set_halfedge(f, g, tm); break; }
+    if(target(g, tm) == keep) { set_halfedge(f, g, tm); break; }
 }
 
 } // namespace internal
