@@ -253,7 +253,7 @@ conforming_cut(TriangleMesh& tm, const CurveRange& curves, ChainMap chain,
   std::vector<std::vector<std::size_t> > curve_points;
   const auto reference = internal::reference_halfedge_marks(tm);
   // dynamic maps start with value-initialized values (0, false)
-  auto edge_of = get(CGAL::dynamic_halfedge_property_t<std::size_t>(), tm);   // Cut_edge + 1 on the reference
+  auto edge_of = get(CGAL::dynamic_edge_property_t<std::size_t>(), tm);   // Cut_edge + 1, 0: none
   {
     auto vertex_point = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);   // point + 1, 0: none
     std::size_t c = 0;
@@ -301,18 +301,18 @@ conforming_cut(TriangleMesh& tm, const CurveRange& curves, ChainMap chain,
           halfedge_descriptor e = h[(k + 1) % 3];   // the side opposite to vertex k
           FT at_source = w[(k + 1) % 3], at_target = w[(k + 2) % 3];
           if(!get(reference, e)) { e = opposite(e, tm); std::swap(at_source, at_target); }
-          if(get(edge_of, e) == 0)
+          if(get(edge_of, edge(e, tm)) == 0)
           {
             cut_edges.push_back({e, source(e, tm), target(e, tm), {}});
-            put(edge_of, e, cut_edges.size());
+            put(edge_of, edge(e, tm), cut_edges.size());
           }
-          auto& ce = cut_edges[get(edge_of, e) - 1];
+          auto& ce = cut_edges[get(edge_of, edge(e, tm)) - 1];
           for(std::size_t p : ce.points)
             if(points[p].at_source == at_source && points[p].at_target == at_target) id = p;
           if(id == points.size())
           {
             points.emplace_back();
-            points.back().edge = get(edge_of, e) - 1;
+            points.back().edge = get(edge_of, edge(e, tm)) - 1;
             points.back().at_source = at_source;
             points.back().at_target = at_target;
             ce.points.push_back(id);
@@ -365,11 +365,7 @@ conforming_cut(TriangleMesh& tm, const CurveRange& curves, ChainMap chain,
       {
         const auto h = halfedge(pa.vertex, pb.vertex, tm);
         found = h.second;
-        if(found)
-        {
-          const halfedge_descriptor r = get(reference, h.first) ? h.first : opposite(h.first, tm);
-          if(get(edge_of, r) != 0) s.edge = get(edge_of, r) - 1;
-        }
+        if(found && get(edge_of, edge(h.first, tm)) != 0) s.edge = get(edge_of, edge(h.first, tm)) - 1;
       }
       else if(pa.edge == pb.edge)   // two points on one edge
       {
@@ -473,6 +469,7 @@ conforming_cut(TriangleMesh& tm, const CurveRange& curves, ChainMap chain,
     put(flow, hnew, get(flow, h));
     put(flow, opposite(hnew, tm), get(flow, opposite(h, tm)));
   }
+  if(!cut_faces.empty())
   {
     auto line = get(CGAL::dynamic_halfedge_property_t<int>(), tm);
     int next_line = 3;
