@@ -25,6 +25,22 @@
 
 // ------------------------------------------------------------------------------------------------ conforming cut
 
+namespace {
+
+// the cut never makes a triangle out of three collinear points
+void expect_no_degenerate_triangle(const Mesh& m)
+{
+  for(FI f : m.faces())
+  {
+    const auto t = triple(m, f);
+    EXPECT_FALSE(CGAL::collinear(m.point(VI(static_cast<Mesh::size_type>(t[0]))), m.point(VI(static_cast<Mesh::size_type>(t[1]))),
+                                 m.point(VI(static_cast<Mesh::size_type>(t[2])))))
+      << "face " << f;
+  }
+}
+
+} // namespace
+
 TEST(ConformingCut, DemoCounts)
 {
   struct Case { const char* mesh; const char* curve; std::size_t v_cut, f_cut; std::size_t endpoints; bool cut; };
@@ -179,14 +195,7 @@ TEST(ConformingCut, SmallCutOnGrid)
   auto e = r.mesh.edge(hb);
   int along = r.chain[std::size_t(e)] * ((std::size_t(hb) % 2 == 0) ? 1 : -1);
   EXPECT_EQ(along, 2);
-  // no degenerate triangle
-  for(FI f : r.mesh.faces())
-  {
-    auto t = triple(r.mesh, f);
-    EXPECT_FALSE(CGAL::collinear(r.mesh.point(VI(static_cast<Mesh::size_type>(t[0]))),
-                                 r.mesh.point(VI(static_cast<Mesh::size_type>(t[1]))),
-                                 r.mesh.point(VI(static_cast<Mesh::size_type>(t[2])))));
-  }
+  expect_no_degenerate_triangle(r.mesh);
   // total area unchanged
   auto area = [](const Mesh& m) {
     double a = 0;
@@ -215,14 +224,7 @@ TEST(ConformingCut, ManyPointsInOneFace)
   EXPECT_TRUE(r.mesh.is_valid(false));
   // Euler: a disk keeps V - E + F = 1
   EXPECT_EQ(long(r.mesh.number_of_vertices()) - long(r.mesh.number_of_edges()) + long(r.mesh.number_of_faces()), 1);
-  for(FI f : r.mesh.faces())
-  {
-    auto t = triple(r.mesh, f);
-    EXPECT_FALSE(CGAL::collinear(r.mesh.point(VI(static_cast<Mesh::size_type>(t[0]))),
-                                 r.mesh.point(VI(static_cast<Mesh::size_type>(t[1]))),
-                                 r.mesh.point(VI(static_cast<Mesh::size_type>(t[2])))))
-      << "face " << f;
-  }
+  expect_no_degenerate_triangle(r.mesh);
   auto b = chain_boundary(r.mesh, r.chain);
   EXPECT_EQ(count_nonzero(b), 4u);
   // p0->p2 and p4->p1 cross inside face 0
