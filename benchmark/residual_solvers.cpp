@@ -15,9 +15,9 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/surface_winding_numbers.h>
 #include <CGAL/Surface_winding_numbers/GLPK_linear_program_traits.h>
-#include <CGAL/Surface_winding_numbers/IO/conforming_cut.h>
-#include <CGAL/Surface_winding_numbers/IO/curve_io.h>
-#include <CGAL/Surface_winding_numbers/IO/read_mesh.h>
+#include "swn_io/conforming_cut.h"
+#include "swn_io/read_curves.h"
+#include "swn_io/read_mesh.h"
 #include <CGAL/Surface_winding_numbers/LEMON_residual_solver.h>
 
 #include <array>

@@ -40,7 +40,7 @@
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 
-#include <CGAL/Surface_winding_numbers/IO/read_mesh.h>
+#include "swn_io/read_mesh.h"
 
 #include <algorithm>
 #include <array>

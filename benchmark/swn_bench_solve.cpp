@@ -20,9 +20,9 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/surface_winding_numbers.h>
-#include <CGAL/Surface_winding_numbers/IO/conforming_cut.h>
-#include <CGAL/Surface_winding_numbers/IO/curve_io.h>
-#include <CGAL/Surface_winding_numbers/IO/read_mesh.h>
+#include "swn_io/conforming_cut.h"
+#include "swn_io/read_curves.h"
+#include "swn_io/read_mesh.h"
 #include <CGAL/Surface_winding_numbers/internal/cotan_weights.h>
 #include <CGAL/Surface_winding_numbers/internal/jump_laplace.h>
 #include <CGAL/Surface_winding_numbers/internal/nonbounding_chain.h>

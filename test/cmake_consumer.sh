@@ -9,6 +9,11 @@ cmake -S "$src" -B "$work/pkg" -DCMAKE_BUILD_TYPE=Release -DCGAL_SWN_BUILD_TESTS
       -DCMAKE_INSTALL_PREFIX="$work/prefix" >/dev/null
 cmake --install "$work/pkg" >/dev/null
 test -f "$work/prefix/include/CGAL/surface_winding_numbers.h"
+test -f "$work/prefix/include/CGAL/Surface_winding_numbers/conforming_cut.h"
+# the swn tool's file handling (tools/swn/swn_io) is not part of the installed package
+if [ -e "$work/prefix/include/CGAL/Surface_winding_numbers/IO" ] || find "$work/prefix" -name 'swn_io' | grep -q .; then
+  echo "the tool's IO code was installed"; exit 1
+fi
 cmake -S "$src/test/cmake_consumer" -B "$work/installed" -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$work/prefix" >/dev/null
 cmake --build "$work/installed" >/dev/null
 "$work/installed/consumer"

@@ -18,6 +18,26 @@
 namespace CGAL {
 namespace Surface_winding_numbers {
 
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// halfedge -> bool: true on the reference halfedge of every edge, `halfedge(e, tm)` for the descriptor
+// `e` met while iterating over `edges(tm)`, false on its opposite
+template <class TriangleMesh>
+auto reference_halfedge_marks(const TriangleMesh& tm)
+{
+  auto reference = get(CGAL::dynamic_halfedge_property_t<bool>(), tm);
+  for(auto e : edges(tm))
+  {
+    put(reference, halfedge(e, tm), true);
+    put(reference, opposite(halfedge(e, tm), tm), false);
+  }
+  return reference;
+}
+
+} // namespace internal
+/// \endcond
+
 /*!
 \ingroup PkgSurfaceWindingNumbersRef
 adds `multiplicity` to the chain for every halfedge of `halfedges`: `+multiplicity` on `edge(h, tm)` if
@@ -35,12 +55,7 @@ void add_halfedges_to_chain(const TriangleMesh& tm, const HalfedgeRange& halfedg
                             int multiplicity = 1)
 {
   typedef typename boost::property_traits<ChainMap>::value_type V;
-  auto reference = get(CGAL::dynamic_halfedge_property_t<bool>(), tm);
-  for(auto e : edges(tm))
-  {
-    put(reference, halfedge(e, tm), true);
-    put(reference, opposite(halfedge(e, tm), tm), false);
-  }
+  const auto reference = internal::reference_halfedge_marks(tm);
   for(auto h : halfedges)
   {
     const auto e = edge(h, tm);

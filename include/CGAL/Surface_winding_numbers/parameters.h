@@ -21,6 +21,8 @@ enum use_reduced_residual_t { use_reduced_residual };
 enum concurrency_t { concurrency };
 enum keep_hodge_factorization_t { keep_hodge_factorization };
 enum report_t { report };
+enum refine_short_pieces_t { refine_short_pieces };
+enum minimum_piece_edges_t { minimum_piece_edges };
 } // namespace internal_np
 /// \endcond
 
@@ -86,6 +88,14 @@ CGAL_SWN_NAMED_PARAMETER(concurrency_t, concurrency)
 /// freed as soon as the harmonic part is computed, before the residual step, whose arrays then reuse
 /// its memory. Same results either way
 CGAL_SWN_NAMED_PARAMETER(keep_hodge_factorization_t, keep_hodge_factorization)
+/// @}
+/// \name Settings of `conforming_cut()`
+/// @{
+
+/// `true` (the default): split the edges of short chain pieces that end at an interior endpoint
+CGAL_SWN_NAMED_PARAMETER(refine_short_pieces_t, refine_short_pieces)
+/// chain pieces with fewer edges than this (default 8) that end at an interior endpoint are refined
+CGAL_SWN_NAMED_PARAMETER(minimum_piece_edges_t, minimum_piece_edges)
 /// @}
 
 #undef CGAL_SWN_NAMED_PARAMETER

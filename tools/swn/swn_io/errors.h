@@ -3,14 +3,17 @@
 //
 // Error type of the file-format layer, and the small text-parsing helpers shared by the readers.
 
-#ifndef CGAL_SURFACE_WINDING_NUMBERS_IO_ERRORS_H
-#define CGAL_SURFACE_WINDING_NUMBERS_IO_ERRORS_H
+#ifndef CGAL_SWN_TOOL_IO_ERRORS_H
+#define CGAL_SWN_TOOL_IO_ERRORS_H
 
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <istream>
 #include <limits>
 #include <stdexcept>
@@ -58,7 +61,7 @@ struct Input_error : std::runtime_error
   }
 };
 
-/// \cond SKIP_IN_MANUAL
+
 namespace internal {
 
 inline bool is_space(char c)
@@ -171,6 +174,61 @@ inline std::string_view strip_comment(std::string_view s)
   return p == std::string_view::npos ? s : s.substr(0, p);
 }
 
+/// Parses the directive `#offset K` (its tokens), failing on the reader's line if it is malformed.
+inline long long offset_directive(const std::vector<std::string_view>& tok, const Line_reader& lr)
+{
+  long long k;
+  if(tok.size() != 2 || !parse_int(tok[1], k))
+    lr.fail("malformed '#offset' directive (expected '#offset INTEGER')");
+  return k;
+}
+
+/// Reads the next record of an OBJ-like file into `tok` (a keyword and its arguments), skipping blank lines
+/// and comments and applying the `#offset K` directives to `offset`. Returns false at the end of the file.
+inline bool next_record(Line_reader& lr, std::string& line, std::vector<std::string_view>& tok, long long& offset)
+{
+  while(lr.next(line))
+  {
+    split_tokens(line, tok);
+    if(tok.empty()) continue;
+    if(tok[0][0] != '#') return true;
+    if(tok[0] == "#offset") offset = offset_directive(tok, lr);
+  }
+  return false;
+}
+
+/// Parses the coordinates of a vertex record, `tok[first]` and on: the first three are returned, the others
+/// (colours, weights) must be numbers too.
+inline std::array<double, 3> vertex_coordinates(const std::vector<std::string_view>& tok, std::size_t first,
+                                                const Line_reader& lr)
+{
+  if(tok.size() < first + 3)
+    lr.fail("vertex record with fewer than 3 coordinates");
+  std::array<double, 3> p;
+  for(std::size_t k = first; k < tok.size(); ++k)
+  {
+    double x;
+    if(!parse_double(tok[k], x))
+      lr.fail("cannot parse number " + quote(tok[k]) + " in vertex record");
+    if(k < first + 3) p[k - first] = x;
+  }
+  return p;
+}
+
+/// Opens an input file in binary mode; `what` names the kind of file ("a mesh file").
+inline std::ifstream open_input_file(const std::string& filename, const std::string& what)
+{
+  std::error_code ec;
+  if(!std::filesystem::exists(filename, ec))
+    throw Input_error(filename, 0, "no such file");
+  if(std::filesystem::is_directory(filename, ec))
+    throw Input_error(filename, 0, "is a directory, not " + what);
+  std::ifstream is(filename, std::ios::binary);
+  if(!is)
+    throw Input_error(filename, 0, "cannot open file for reading");
+  return is;
+}
+
 inline std::string lower(std::string_view s)
 {
   std::string r(s);
@@ -180,10 +238,10 @@ inline std::string lower(std::string_view s)
 }
 
 } // namespace internal
-/// \endcond
+
 
 } // namespace IO
 } // namespace Surface_winding_numbers
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_WINDING_NUMBERS_IO_ERRORS_H
+#endif // CGAL_SWN_TOOL_IO_ERRORS_H

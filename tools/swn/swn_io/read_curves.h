@@ -1,21 +1,21 @@
 // Copyright (c) 2024 The CGAL Surface_winding_numbers contributors.
 // SPDX-License-Identifier: MIT
 //
-// Readers for input curves (authors' curve files, OBJ `l` records, vertex polylines, halfedge chains) into a
-// neutral description, and the authors' edge numbering.
+// Readers for input curves (authors' curve files, OBJ `l` records, vertex polylines, halfedge chains) into
+// a Curve_set, checked against the mesh.
 
-#ifndef CGAL_SURFACE_WINDING_NUMBERS_IO_CURVE_IO_H
-#define CGAL_SURFACE_WINDING_NUMBERS_IO_CURVE_IO_H
+#ifndef CGAL_SWN_TOOL_IO_READ_CURVES_H
+#define CGAL_SWN_TOOL_IO_READ_CURVES_H
 
-#include <CGAL/Surface_winding_numbers/IO/errors.h>
-#include <CGAL/Surface_winding_numbers/IO/read_mesh.h>
+#include "swn_io/curve_set.h"
+#include "swn_io/errors.h"
+#include "swn_io/mesh_soup.h"
 
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -24,7 +24,7 @@
 #include <vector>
 
 /*!
-  \file curve_io.h
+  \file read_curves.h
 
   Curves are read into a `Curve_set`: a list of points (mesh vertices, or points on mesh edges) and a list
   of directed segments between them, plus the dual pairs of `c` records. Every point and segment remembers the
@@ -65,113 +65,6 @@ namespace CGAL {
 namespace Surface_winding_numbers {
 namespace IO {
 
-/*!
-  \brief a point of an input curve: a mesh vertex, or a point on a mesh edge.
-*/
-struct Curve_point
-{
-  /// kind of point
-  enum Kind { VERTEX, EDGE };
-  /// vertex point or edge point
-  Kind kind = VERTEX;
-  /// the vertex index (VERTEX), or the edge index in the authors' numbering (EDGE)
-  std::size_t element = 0;
-  /// EDGE only: parameter in (0,1) from first(e) (t = 0) to second(e) (t = 1)
-  double t = 0.;
-  /// 1-based line of the record that defined the point (0 if none)
-  std::size_t line = 0;
-};
-
-/*!
-  \brief a directed segment of an input curve, between two entries of `Curve_set::points`.
-*/
-struct Curve_segment
-{
-  /// index of the start point in `Curve_set::points`
-  std::size_t a = 0;
-  /// index of the end point in `Curve_set::points`
-  std::size_t b = 0;
-  /// 1-based line of the record that defined the segment
-  std::size_t line = 0;
-};
-
-/*!
-  \brief a pair of faces of a dual chain: the function jumps by +1 from `face_a` to `face_b`.
-*/
-struct Curve_dual_pair
-{
-  /// the face the jump starts from (0-based)
-  std::size_t face_a = 0;
-  /// the face the jump goes to, one higher than `face_a` (0-based)
-  std::size_t face_b = 0;
-  /// 1-based line of the `c` record
-  std::size_t line = 0;
-};
-
-/*!
-  \brief a curve read from a file, in a neutral description.
-*/
-struct Curve_set
-{
-  /// the points of the curve, referred to by index from `segments`
-  std::vector<Curve_point> points;
-  /// the directed segments of the curve
-  std::vector<Curve_segment> segments;
-  /// the pairs of faces of the dual chains (`c` records)
-  std::vector<Curve_dual_pair> dual_pairs;
-  /// the file the curve came from, used in error messages
-  std::string file;
-};
-
-/*!
-  \brief curve file formats; see the file documentation for the detection rule.
-*/
-enum class Curve_file_format { AUTO, AUTHORS, POLYLINES, HALFEDGES };
-
-/*!
-  \brief returns, for each edge of the authors' numbering, the halfedge from first(e) to second(e).
-
-  The numbering scans the faces in index order and, within face (v0,v1,v2), the halfedges v0->v1, v1->v2,
-  v2->v0, where v0 is `target(halfedge(f, mesh))` (the first vertex in the file for meshes read by
-  `read_mesh()`). The first time an undirected edge is met it gets the next index and its direction.
-*/
-template <class Point>
-std::vector<typename CGAL::Surface_mesh<Point>::Halfedge_index>
-authors_edge_halfedges(const CGAL::Surface_mesh<Point>& mesh)
-{
-  typedef typename CGAL::Surface_mesh<Point>::Halfedge_index Halfedge_index;
-  std::vector<Halfedge_index> result;
-  result.reserve(mesh.number_of_edges());
-  std::vector<bool> seen(mesh.number_of_edges() + mesh.number_of_removed_edges(), false);
-  for(auto f : mesh.faces())
-  {
-    Halfedge_index h0 = mesh.halfedge(f);
-    Halfedge_index h = mesh.next(h0);
-    while(true)
-    {
-      std::size_t e = std::size_t(mesh.edge(h));
-      if(!seen[e]) { seen[e] = true; result.push_back(h); }
-      if(h == h0) break;
-      h = mesh.next(h);
-    }
-  }
-  return result;
-}
-
-/*!
-  \brief returns, for each edge index of the authors' numbering (notes section 5.3), the pair
-  (first(e), second(e)) of vertex indices. See `authors_edge_halfedges()`.
-*/
-template <class Point>
-std::vector<std::pair<std::size_t, std::size_t> > authors_edge_numbering(const CGAL::Surface_mesh<Point>& mesh)
-{
-  std::vector<std::pair<std::size_t, std::size_t> > r;
-  for(auto h : authors_edge_halfedges(mesh))
-    r.emplace_back(std::size_t(mesh.source(h)), std::size_t(mesh.target(h)));
-  return r;
-}
-
-/// \cond SKIP_IN_MANUAL
 namespace internal {
 
 template <class Point>
@@ -297,21 +190,9 @@ Curve_set read_authors_curves(std::istream& is, const std::string& file, const C
   std::vector<Pending> pending;
   const std::size_t nv = mesh.number_of_vertices(), nf = mesh.number_of_faces();
 
-  while(lr.next(line))
+  while(next_record(lr, line, tok, offset))
   {
-    split_tokens(line, tok);
-    if(tok.empty()) continue;
     std::string_view kw = tok[0];
-    if(kw[0] == '#')
-    {
-      if(kw == "#offset")
-      {
-        if(tok.size() != 2)
-          lr.fail("malformed '#offset' directive (expected '#offset INTEGER')");
-        offset = int_token(tok[1], lr);
-      }
-      continue;
-    }
     if(kw == "v")
     {
       if(tok.size() < 2) lr.fail("'v' record without a vertex index");
@@ -404,8 +285,11 @@ inline std::size_t vertex_point(Curve_set& cs, std::map<std::size_t, std::size_t
   return ins.first->second;
 }
 
-template <class Point>
-Curve_set read_polyline_curves(std::istream& is, const std::string& file, const CGAL::Surface_mesh<Point>& mesh)
+// Reads a curve file of 0-based vertex records, one per line ('#' starts a comment): `record(tok, lr, cs,
+// vertex)` reads the tokens of a line into `cs`, where `vertex(token)` parses a vertex index, checks it and
+// returns its point in `cs` (one point per vertex).
+template <class Record>
+Curve_set read_vertex_records(std::istream& is, const std::string& file, std::size_t nv, Record record)
 {
   Curve_set cs;
   cs.file = file;
@@ -413,75 +297,66 @@ Curve_set read_polyline_curves(std::istream& is, const std::string& file, const 
   std::string line;
   std::vector<std::string_view> tok;
   std::map<std::size_t, std::size_t> index;
-  const std::size_t nv = mesh.number_of_vertices();
+  auto vertex = [&](std::string_view token) {
+    const long long i = int_token(token, lr);
+    if(i < 0 || static_cast<unsigned long long>(i) >= nv)
+      lr.fail("vertex index " + std::to_string(i) + " is out of range (" + std::to_string(nv) + " vertices, 0-based)");
+    return vertex_point(cs, index, static_cast<std::size_t>(i), lr.line_number());
+  };
   while(lr.next(line))
   {
     split_tokens(strip_comment(line), tok);
-    if(tok.empty()) continue;
-    if(tok.size() < 2)
-      lr.fail("a polyline needs at least two vertex indices");
-    std::size_t prev = 0;
-    for(std::size_t k = 0; k < tok.size(); ++k)
-    {
-      long long i = int_token(tok[k], lr);
-      if(i < 0 || static_cast<unsigned long long>(i) >= nv)
-        lr.fail("vertex index " + std::to_string(i) + " is out of range (" + std::to_string(nv) + " vertices, 0-based)");
-      std::size_t pt = vertex_point(cs, index, static_cast<std::size_t>(i), lr.line_number());
-      if(k > 0) cs.segments.push_back(Curve_segment{prev, pt, lr.line_number()});
-      prev = pt;
-    }
+    if(!tok.empty()) record(tok, lr, cs, vertex);
   }
   if(is.bad())
     throw Input_error(file, 0, "read error");
   return cs;
+}
+
+template <class Point>
+Curve_set read_polyline_curves(std::istream& is, const std::string& file, const CGAL::Surface_mesh<Point>& mesh)
+{
+  return read_vertex_records(is, file, mesh.number_of_vertices(),
+                             [](const std::vector<std::string_view>& tok, const Line_reader& lr, Curve_set& cs, auto& vertex) {
+    if(tok.size() < 2)
+      lr.fail("a polyline needs at least two vertex indices");
+    std::size_t prev = vertex(tok[0]);
+    for(std::size_t k = 1; k < tok.size(); ++k)
+    {
+      const std::size_t pt = vertex(tok[k]);
+      cs.segments.push_back(Curve_segment{prev, pt, lr.line_number()});
+      prev = pt;
+    }
+  });
 }
 
 template <class Point>
 Curve_set read_halfedge_curves(std::istream& is, const std::string& file, const CGAL::Surface_mesh<Point>& mesh)
 {
   typedef CGAL::Surface_mesh<Point> Mesh;
-  Curve_set cs;
-  cs.file = file;
-  Line_reader lr(is, file);
-  std::string line;
-  std::vector<std::string_view> tok;
-  std::map<std::size_t, std::size_t> index;
-  const std::size_t nv = mesh.number_of_vertices();
-  while(lr.next(line))
-  {
-    split_tokens(strip_comment(line), tok);
-    if(tok.empty()) continue;
+  return read_vertex_records(is, file, mesh.number_of_vertices(),
+                             [&](const std::vector<std::string_view>& tok, const Line_reader& lr, Curve_set& cs, auto& vertex) {
     if(tok[0] != "h")
       lr.fail("unknown record " + quote(tok[0]) + " (expected 'h SRC DST [MULTIPLICITY]')");
     if(tok.size() < 3)
       lr.fail("an 'h' record needs a source and a target vertex");
     if(tok.size() > 4)
       lr.fail("trailing junk " + quote(tok[4]) + " after the multiplicity");
-    long long s = int_token(tok[1], lr), t = int_token(tok[2], lr), m = 1;
-    if(tok.size() == 4)
-    {
-      m = int_token(tok[3], lr);
-      if(m < 1 || m > 1000)
-        lr.fail("multiplicity " + std::to_string(m) + " is not in [1, 1000]");
-    }
-    for(long long v : {s, t})
-      if(v < 0 || static_cast<unsigned long long>(v) >= nv)
-        lr.fail("vertex index " + std::to_string(v) + " is out of range (" + std::to_string(nv) + " vertices, 0-based)");
+    const long long m = tok.size() == 4 ? int_token(tok[3], lr) : 1;
+    if(m < 1 || m > 1000)
+      lr.fail("multiplicity " + std::to_string(m) + " is not in [1, 1000]");
+    const std::size_t a = vertex(tok[1]), b = vertex(tok[2]);
+    const std::size_t s = cs.points[a].element, t = cs.points[b].element;
     typename Mesh::Vertex_index vs(static_cast<typename Mesh::size_type>(s)), vt(static_cast<typename Mesh::size_type>(t));
     if(s == t || !CGAL::halfedge(vs, vt, mesh).second)
       lr.fail("halfedge " + std::to_string(s) + " -> " + std::to_string(t) + " is not an edge of the mesh");
-    std::size_t a = vertex_point(cs, index, static_cast<std::size_t>(s), lr.line_number());
-    std::size_t b = vertex_point(cs, index, static_cast<std::size_t>(t), lr.line_number());
     for(long long k = 0; k < m; ++k)
       cs.segments.push_back(Curve_segment{a, b, lr.line_number()});
-  }
-  if(is.bad())
-    throw Input_error(file, 0, "read error");
-  return cs;
+  });
 }
 
 } // namespace internal
-/// \endcond
+
 
 /*!
   \brief reads a curve from a stream, in the given format (`AUTO`: decided by the first line, see the file
@@ -527,14 +402,7 @@ template <class Point>
 Curve_set read_curve_file(const std::string& filename, const CGAL::Surface_mesh<Point>& mesh,
                           Curve_file_format format = Curve_file_format::AUTO)
 {
-  std::error_code ec;
-  if(!std::filesystem::exists(filename, ec))
-    throw Input_error(filename, 0, "no such file");
-  if(std::filesystem::is_directory(filename, ec))
-    throw Input_error(filename, 0, "is a directory, not a curve file");
-  std::ifstream is(filename, std::ios::binary);
-  if(!is)
-    throw Input_error(filename, 0, "cannot open file for reading");
+  std::ifstream is = internal::open_input_file(filename, "a curve file");
   return read_curves(is, filename, mesh, format);
 }
 
@@ -581,4 +449,4 @@ inline bool has_curve_records(const Mesh_read_info& info)
 } // namespace Surface_winding_numbers
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_WINDING_NUMBERS_IO_CURVE_IO_H
+#endif // CGAL_SWN_TOOL_IO_READ_CURVES_H

@@ -10,30 +10,28 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/surface_winding_numbers.h>
-#include <CGAL/Surface_winding_numbers/IO/conforming_cut.h>
-#include <CGAL/Surface_winding_numbers/IO/curve_io.h>
-#include <CGAL/Surface_winding_numbers/IO/read_mesh.h>
-#include <CGAL/Surface_winding_numbers/IO/write_outputs.h>
-#include <CGAL/Surface_winding_numbers/single_threaded_blas.h>
+#ifdef CGAL_USE_GLPK
+#include <CGAL/Surface_winding_numbers/GLPK_linear_program_traits.h>
+#endif
 
+#include "swn_io/atomic_output_dir.h"
+#include "swn_io/conforming_cut.h"
+#include "swn_io/json.h"
+#include "swn_io/read_curves.h"
+#include "swn_io/read_mesh.h"
+#include "swn_io/write_outputs.h"
+
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
-#include <cstring>
 #include <future>
 #include <iostream>
-#include <limits>
 #include <map>
 #include <sstream>
 #include <string>
 #include <system_error>
 #include <vector>
-#if defined(__linux__)
-#include <unistd.h>
-#if defined(__GLIBC__)
-#include <malloc.h>
-#endif
-#endif
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
@@ -77,8 +75,10 @@ static const char* usage =
   "  swn data/swn-demo/DoubleTorusWithLoops.obj --output-dir out/dt --verbose\n"
   "  swn data/swn-demo/bunny.obj --curve data/swn-demo/bunny-brokenheart.txt --output-dir out/bunny\n"
   "\n"
-  "environment: OMP_THREAD_LIMIT and OPENBLAS_NUM_THREADS limit the threads of CHOLMOD and OpenBLAS; unless\n"
-  "both are set, the tool restarts itself once (Linux) with 1 for the ones not set\n\n"
+  "environment: the tool sets no process-wide setting. swn-tuned, next to swn, runs it with one thread per\n"
+  "call in CHOLMOD and OpenBLAS (OMP_THREAD_LIMIT=1, OPENBLAS_NUM_THREADS=1) and malloc's huge pages and\n"
+  "freed-memory reuse (GLIBC_TUNABLES), keeping what is already set: DoubleTorusWithLoops 0.30 s instead\n"
+  "of 0.53 s on 2 shared cores (medians of 15 alternating runs; 40-49 % less time in three such series)\n\n"
   "exit status: 0 success, 1 solver or output failure, 2 bad input (the message names file and line)\n";
 
 namespace {
@@ -142,12 +142,21 @@ Options parse_arguments(int argc, char** argv)
   }
   if(o.help) return o;
   if(o.mesh.empty()) throw Usage_error("no mesh file given");
+  {
+    std::vector<std::string> available;   // the residual solvers compiled in
 #ifdef CGAL_SWN_USE_LEMON
-  if(o.lp_solver != "glpk" && o.lp_solver != "lemon" && o.lp_solver != "lemon-simplex")
-    throw Usage_error("unknown --lp-solver '" + o.lp_solver + "' (available: lemon, lemon-simplex, glpk)");
-#else
-  if(o.lp_solver != "glpk") throw Usage_error("unknown --lp-solver '" + o.lp_solver + "' (available: glpk)");
+    available.insert(available.end(), {"lemon", "lemon-simplex"});
 #endif
+#ifdef CGAL_USE_GLPK
+    available.push_back("glpk");
+#endif
+    if(std::find(available.begin(), available.end(), o.lp_solver) == available.end())
+    {
+      std::string names;
+      for(const std::string& n : available) names += (names.empty() ? "" : ", ") + n;
+      throw Usage_error("unknown --lp-solver '" + o.lp_solver + "' (available: " + (names.empty() ? "none" : names) + ")");
+    }
+  }
 #ifdef CGAL_SWN_USE_CHOLMOD
   if(o.linear_solver != "ldlt" && o.linear_solver != "cholmod")
     throw Usage_error("unknown --linear-solver '" + o.linear_solver + "' (available: cholmod, ldlt)");
@@ -174,64 +183,10 @@ std::future<void> start_task(bool sequential, Task task)
   return std::async(std::launch::deferred, task);
 }
 
-// The jump Laplacian and the Hodge step's Laplacian are factorized side by side on two threads. Under
-// them, CHOLMOD (SuiteSparse 5) runs parts of its supernodal factorization in OpenMP regions of a
-// fixed four threads, and OpenBLAS keeps its own pool: together they put many more threads than
-// cores on the machine, and the first solve of DoubleTorusWithLoops took 0.12-0.30 s instead of
-// 0.085-0.115 s (benchmark/RESULTS.md, Speed). Both limits are read from the environment when the
-// libraries are loaded, before main(). Likewise glibc reads its malloc tunables at startup, and
-// `glibc.malloc.hugetlb=1` (glibc 2.35 and later; older ones ignore it) makes malloc ask for
-// transparent huge pages: on a mesh of a million faces every array of the run is touched page by
-// page, and with 4 KiB pages the page faults and TLB misses cost a quarter of the run (chain10:
-// 32.7 s -> 23.5 s, benchmark/RESULTS.md). So the tool restarts itself once (Linux:
-// /proc/self/exe) with OMP_THREAD_LIMIT=1, OPENBLAS_NUM_THREADS=1 and that tunable added to
-// GLIBC_TUNABLES, keeping whatever the user set. If the restart is not possible, the run goes on
-// in this process.
-void restart_with_process_settings(char** argv)
-{
-#if defined(__linux__)
-  const char* tunables = std::getenv("GLIBC_TUNABLES");
-  const bool has_hugetlb = tunables != nullptr && std::strstr(tunables, "glibc.malloc.hugetlb") != nullptr;
-  if(std::getenv("OMP_THREAD_LIMIT") != nullptr && std::getenv("OPENBLAS_NUM_THREADS") != nullptr && has_hugetlb) return;
-  if(std::getenv("SWN_TOOL_RESTARTS") != nullptr) return;   // restarted once already: never loop
-  if(setenv("OMP_THREAD_LIMIT", "1", 0) != 0 || setenv("OPENBLAS_NUM_THREADS", "1", 0) != 0) return;
-  if(!has_hugetlb)
-  {
-    const std::string t = tunables != nullptr && *tunables != '\0' ? std::string(tunables) + ":glibc.malloc.hugetlb=1"
-                                                                    : std::string("glibc.malloc.hugetlb=1");
-    if(setenv("GLIBC_TUNABLES", t.c_str(), 1) != 0) return;
-  }
-  // marks the restart for the log (--verbose); the new process has the settings and goes on
-  if(setenv("SWN_TOOL_RESTARTS", "1", 1) != 0) return;
-  execv("/proc/self/exe", argv);   // returns only on failure
-#else
-  (void)argv;
-#endif
-}
-
-// The residual step allocates and frees arrays of a few to a few tens of megabytes per level of its
-// hierarchy and per certificate. glibc hands freed memory at the top of the heap back to the system
-// (and serves blocks above its adaptive threshold by mmap), so the next allocation of the same size
-// page-faults it in again. The tool keeps freed memory for reuse instead (the peak does not grow:
-// nothing more is allocated, less is returned early). A library does not touch process-wide
-// allocator settings; the tool, which owns its process, does.
-void keep_freed_memory_for_reuse()
-{
-#if defined(__GLIBC__)
-  mallopt(M_TRIM_THRESHOLD, std::numeric_limits<int>::max());
-  mallopt(M_MMAP_THRESHOLD, 32 * 1024 * 1024);   // glibc's upper limit on 64-bit systems
-#endif
-}
-
 } // namespace
 
 int main(int argc, char** argv)
 {
-  restart_with_process_settings(argv);
-  keep_freed_memory_for_reuse();
-  // one OpenBLAS thread per call, so that the two factorizations run side by side (when the
-  // environment does not say otherwise)
-  const bool single_threaded_blas = SWN::use_single_threaded_openblas();
   Options opt;
   try
   {
@@ -244,9 +199,6 @@ int main(int argc, char** argv)
   }
   if(opt.help) { std::cout << usage; return 0; }
   auto log = [&](const std::string& s) { if(opt.verbose) std::cerr << "[swn] " << s << "\n"; };
-  if(single_threaded_blas) log("OpenBLAS set to one thread per call (OPENBLAS_NUM_THREADS overrides)");
-  if(const char* restarts = std::getenv("SWN_TOOL_RESTARTS"))
-    log(std::string("restarted ") + restarts + " time(s) with one thread per library and malloc's huge pages");
   for(const char* var : {"OMP_THREAD_LIMIT", "OPENBLAS_NUM_THREADS", "GLIBC_TUNABLES"})
     if(const char* value = std::getenv(var)) log(std::string(var) + "=" + value);
 
@@ -319,15 +271,16 @@ int main(int argc, char** argv)
     return solve(lp, SWN::internal::Eigen_LDLT_sparse_solver());
   };
   bool ok = false;
-  SWN::GLPK_linear_program_traits glpk;
 #ifdef CGAL_SWN_USE_LEMON
   SWN::LEMON_residual_solver::Options lemon_options;
   if(opt.lp_solver == "lemon-simplex") lemon_options.algorithm = SWN::LEMON_residual_solver::Options::NETWORK_SIMPLEX;
   SWN::LEMON_residual_solver lemon(lemon_options);
   if(opt.lp_solver == "lemon" || opt.lp_solver == "lemon-simplex") ok = solve_with(lemon);
-  else
 #endif
-    ok = solve_with(glpk);
+#ifdef CGAL_USE_GLPK
+  SWN::GLPK_linear_program_traits glpk;
+  if(opt.lp_solver == "glpk") ok = solve_with(glpk);
+#endif
   if(!ok)
   {
     const bool bad_input = report.invalid_input;

@@ -1,0 +1,371 @@
+// Copyright (c) 2024 The CGAL Surface_winding_numbers contributors.
+// SPDX-License-Identifier: MIT
+//
+// The triangle soup the mesh readers fill (points and triangles in file order, with their lines), what they
+// report besides the mesh, and the soup's validation and conversion into a Surface_mesh that keeps the
+// file's numbering.
+
+#ifndef CGAL_SWN_TOOL_IO_MESH_SOUP_H
+#define CGAL_SWN_TOOL_IO_MESH_SOUP_H
+
+#include "swn_io/errors.h"
+
+#include <CGAL/Surface_winding_numbers/internal/union_find.h>
+
+#include <CGAL/Surface_mesh.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <istream>
+#include <iterator>
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_winding_numbers {
+namespace IO {
+
+/*!
+  \brief an `l` record of an OBJ file: a polyline over mesh vertices.
+*/
+struct Obj_polyline
+{
+  /// 0-based mesh vertex indices (the `#offset` in force and OBJ relative indices already applied)
+  std::vector<std::size_t> vertices;
+  /// 1-based line of the record
+  std::size_t line = 0;
+};
+
+/*!
+  \brief a `c` record of an OBJ file: a dual chain over faces (a jump of +1 from each face to the next).
+*/
+struct Obj_dual_chain
+{
+  /// 0-based face indices (the `#offset` in force and OBJ relative indices already applied)
+  std::vector<std::size_t> faces;
+  /// 1-based line of the record
+  std::size_t line = 0;
+};
+
+/*!
+  \brief what a mesh reader found besides the mesh itself: statistics, warnings and inline curve records.
+*/
+struct Mesh_read_info
+{
+  /// the file name as given
+  std::string file;
+  /// "off", "obj", "ply" or "stl"
+  std::string format;
+  /// number of vertices of the mesh (isolated vertices included)
+  std::size_t number_of_vertices = 0;
+  /// number of faces of the mesh
+  std::size_t number_of_faces = 0;
+  /// vertices used by no face; they are kept as isolated vertices
+  std::size_t unreferenced_vertices = 0;
+  /// vertices whose position is exactly equal to the position of a vertex with a smaller index
+  std::size_t duplicated_vertex_positions = 0;
+  /// STL only: number of corner records merged into an existing vertex (exact equality of coordinates)
+  std::size_t merged_stl_vertices = 0;
+  /// faces with exactly zero area (collinear corners); kept
+  std::size_t degenerate_faces = 0;
+  /// human-readable warnings (one line each)
+  std::vector<std::string> warnings;
+  /// OBJ only: the `l` records, in file order
+  std::vector<Obj_polyline> obj_polylines;
+  /// OBJ only: the `c` records, in file order
+  std::vector<Obj_dual_chain> obj_dual_chains;
+};
+
+/*!
+  \brief a triangle soup with the source line of every vertex and face (0 when the data is binary).
+*/
+struct Triangle_soup
+{
+  /// vertex coordinates, in file order
+  std::vector<std::array<double, 3> > points;
+  /// 1-based line of each vertex (0 for binary data)
+  std::vector<std::size_t> point_lines;
+  /// the three 0-based vertex indices of each triangle, in file order
+  std::vector<std::array<std::size_t, 3> > triangles;
+  /// 1-based line of each triangle (0 for binary data)
+  std::vector<std::size_t> triangle_lines;
+};
+
+
+namespace internal {
+
+inline std::string face_arity_message(std::size_t face, std::size_t n)
+{
+  if(n < 3)
+    return "face " + std::to_string(face) + " has " + std::to_string(n) +
+           (n == 1 ? " vertex" : " vertices") + " (a face needs at least 3)";
+  return "face " + std::to_string(face) + " has " + std::to_string(n) +
+         " vertices: only triangle meshes are supported";
+}
+
+inline void check_finite_point(const std::array<double, 3>& p, const std::string& file, std::size_t line,
+                               std::size_t vertex)
+{
+  for(int k = 0; k < 3; ++k)
+    if(!std::isfinite(p[k]))
+      throw Input_error(file, line, "vertex " + std::to_string(vertex) + " has a non-finite coordinate (" +
+                                        (std::isnan(p[k]) ? std::string("NaN") : std::string("inf")) + ")");
+}
+
+// Reasonable cap for reserve() calls driven by counts read from a file.
+inline std::size_t reserve_cap(long long n) { return static_cast<std::size_t>(std::min<long long>(std::max<long long>(n, 0), 1 << 16)); }
+
+inline std::string read_whole_stream(std::istream& is)
+{
+  std::string s((std::istreambuf_iterator<char>(is)), std::istreambuf_iterator<char>());
+  return s;
+}
+
+// A soup read by one of CGAL's readers (binary data: no lines): its points, checked finite, and its
+// polygons, which must be triangles.
+template <class Point, class Polygon>
+void soup_from_points_and_polygons(const std::vector<Point>& points, const std::vector<Polygon>& polygons,
+                                   const std::string& file, Triangle_soup& soup)
+{
+  for(const Point& q : points)
+  {
+    const std::array<double, 3> p = {static_cast<double>(q[0]), static_cast<double>(q[1]), static_cast<double>(q[2])};
+    check_finite_point(p, file, 0, soup.points.size());
+    soup.points.push_back(p);
+    soup.point_lines.push_back(0);
+  }
+  for(const Polygon& polygon : polygons)
+  {
+    if(polygon.size() != 3)
+      throw Input_error(file, 0, face_arity_message(soup.triangles.size(), polygon.size()));
+    soup.triangles.push_back({polygon[0], polygon[1], polygon[2]});
+    soup.triangle_lines.push_back(0);
+  }
+}
+
+// ------------------------------------------------------------------------------------------------ checks
+
+inline std::string edge_name(std::size_t a, std::size_t b)
+{
+  return "(" + std::to_string(a) + ", " + std::to_string(b) + ")";
+}
+
+// a corner without twin: its halfedge is on the border (check_triangle_soup())
+constexpr std::uint32_t no_twin = (std::numeric_limits<std::uint32_t>::max)();
+
+/// Validates a triangle soup: index range, repeated vertices, non-empty, oriented 2-manifold. Fills the
+/// statistics of `info`. Throws `Input_error` on the first problem, scanning faces in order.
+/// `twin[3 f + k]` gets the corner whose halfedge runs along that of corner k of face f (from its vertex
+/// k to vertex k + 1) the other way, or `no_twin` on a border (for triangle_soup_to_mesh()).
+inline void check_triangle_soup(const Triangle_soup& soup, const std::string& file, Mesh_read_info& info,
+                                std::vector<std::uint32_t>& twin)
+{
+  const std::size_t nv = soup.points.size(), nf = soup.triangles.size();
+  auto fline = [&](std::size_t f) { return f < soup.triangle_lines.size() ? soup.triangle_lines[f] : 0; };
+  auto vline = [&](std::size_t v) { return v < soup.point_lines.size() ? soup.point_lines[v] : 0; };
+  if(nf == 0)
+    throw Input_error(file, 0, nv == 0 ? "empty mesh (no vertices and no faces)" : "the mesh has no faces");
+  if(nv >= (std::size_t(1) << 32) || nf >= (std::size_t(1) << 30))
+    throw Input_error(file, 0, "mesh too large");
+
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    const auto& t = soup.triangles[f];
+    for(int k = 0; k < 3; ++k)
+      if(t[k] >= nv)
+        throw Input_error(file, fline(f), "face " + std::to_string(f) + " refers to vertex " + std::to_string(t[k]) +
+                                              " (0-based) but there are only " + std::to_string(nv) + " vertices");
+    if(t[0] == t[1] || t[1] == t[2] || t[2] == t[0])
+      throw Input_error(file, fline(f), "face " + std::to_string(f) + " has a repeated vertex (" + std::to_string(t[0]) +
+                                            ", " + std::to_string(t[1]) + ", " + std::to_string(t[2]) + ")");
+  }
+
+  // outgoing halfedges per vertex (CSR, in face order): (target, face)
+  std::vector<std::uint32_t> start(nv + 1, 0);
+  for(const auto& t : soup.triangles)
+    for(int k = 0; k < 3; ++k) ++start[t[k] + 1];
+  for(std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
+  std::vector<std::pair<std::uint32_t, std::uint32_t> > out(3 * nf);
+  {
+    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+    for(std::size_t f = 0; f < nf; ++f)
+      for(int k = 0; k < 3; ++k)
+        out[fill[soup.triangles[f][k]]++] = {std::uint32_t(soup.triangles[f][(k + 1) % 3]), std::uint32_t(f)};
+  }
+  // edges: at most two faces, traversed in opposite directions; the problem is reported at the first face (in
+  // file order) that creates it. Vertices: the faces around each vertex must form a single fan; the corners
+  // of two faces glued along an edge are united as the second face of the pair is met (one scan for both)
+  CGAL::Surface_winding_numbers::internal::Union_find uf(3 * nf);
+  twin.assign(3 * nf, no_twin);
+  auto local = [&](std::size_t f, std::size_t v) {
+    const auto& t = soup.triangles[f];
+    return 3 * f + (t[0] == v ? 0 : (t[1] == v ? 1 : 2));
+  };
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    const auto& t = soup.triangles[f];
+    for(int k = 0; k < 3; ++k)
+    {
+      const std::size_t a = t[k], b = t[(k + 1) % 3];
+      std::size_t same = nf, opp1 = nf, opp2 = nf;  // earlier faces with a->b, and with b->a
+      for(std::uint32_t i = start[a]; i < start[a + 1] && out[i].second < f; ++i)
+        if(out[i].first == b) { same = out[i].second; break; }
+      for(std::uint32_t i = start[b]; i < start[b + 1] && out[i].second < f; ++i)
+        if(out[i].first == a) { if(opp1 == nf) opp1 = out[i].second; else { opp2 = out[i].second; break; } }
+      if(opp2 != nf || (same != nf && opp1 != nf))
+      {
+        std::size_t f0 = std::min(same, opp1), f1 = (opp2 != nf) ? opp2 : std::max(same, opp1);
+        throw Input_error(file, fline(f), "non-manifold edge " + edge_name(std::min(a, b), std::max(a, b)) +
+                                              ": shared by more than two faces (faces " + std::to_string(f0) + ", " +
+                                              std::to_string(f1) + " and " + std::to_string(f) + ")");
+      }
+      if(same != nf)
+        throw Input_error(file, fline(f), "faces " + std::to_string(same) + " and " + std::to_string(f) +
+                                              " both traverse edge " + edge_name(a, b) +
+                                              " in the same direction: the surface is not consistently oriented "
+                                              "(or not orientable)");
+      if(opp1 != nf)
+      {
+        const std::size_t at_b = local(opp1, b);   // opp1's corner at b, whose halfedge runs b -> a
+        uf.unite(3 * f + k, local(opp1, a));
+        uf.unite(3 * f + (k + 1) % 3, at_b);
+        twin[3 * f + k] = std::uint32_t(at_b);
+        twin[at_b] = std::uint32_t(3 * f + k);
+      }
+    }
+  }
+
+  const std::size_t none = std::size_t(-1);
+  std::vector<std::size_t> root(nv, none);
+  for(std::size_t f = 0; f < nf; ++f)
+    for(int k = 0; k < 3; ++k)
+    {
+      std::size_t v = soup.triangles[f][k];
+      std::size_t r = uf.find(3 * f + k);
+      if(root[v] == none) root[v] = r;
+      else if(root[v] != r)
+        throw Input_error(file, vline(v), "non-manifold vertex " + std::to_string(v) +
+                                              ": the faces around it form several separate fans (faces " +
+                                              std::to_string(root[v] / 3) + " and " + std::to_string(f) + ")");
+    }
+
+  // statistics
+  info.number_of_vertices = nv;
+  info.number_of_faces = nf;
+  std::vector<std::size_t> unref;
+  for(std::size_t v = 0; v < nv; ++v)
+    if(root[v] == none) unref.push_back(v);
+  info.unreferenced_vertices = unref.size();
+  if(!unref.empty())
+  {
+    std::string s = std::to_string(unref.size()) + " unreferenced vertices kept as isolated vertices (";
+    for(std::size_t k = 0; k < std::min<std::size_t>(unref.size(), 5); ++k)
+      s += (k ? ", " : "") + std::to_string(unref[k]);
+    s += unref.size() > 5 ? ", ...)" : ")";
+    info.warnings.push_back(s);
+  }
+  std::vector<std::pair<std::array<double, 3>, std::size_t> > order(nv);
+  for(std::size_t v = 0; v < nv; ++v) order[v] = {soup.points[v], v};
+  std::sort(order.begin(), order.end());
+  std::size_t dup = 0, dup_a = 0, dup_b = 0;
+  for(std::size_t k = 1; k < nv; ++k)
+    if(order[k].first == order[k - 1].first)
+    {
+      if(dup == 0) { dup_a = order[k - 1].second; dup_b = order[k].second; }
+      ++dup;
+    }
+  info.duplicated_vertex_positions = dup;
+  if(dup > 0)
+    info.warnings.push_back(std::to_string(dup) + " vertices have exactly the same position as another vertex (e.g. " +
+                            std::to_string(std::min(dup_a, dup_b)) + " and " + std::to_string(std::max(dup_a, dup_b)) +
+                            "); kept as distinct vertices");
+  std::size_t degenerate = 0;
+  for(const auto& t : soup.triangles)
+  {
+    const auto &p = soup.points[t[0]], &q = soup.points[t[1]], &r = soup.points[t[2]];
+    double u[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]}, w[3] = {r[0] - p[0], r[1] - p[1], r[2] - p[2]};
+    double c0 = u[1] * w[2] - u[2] * w[1], c1 = u[2] * w[0] - u[0] * w[2], c2 = u[0] * w[1] - u[1] * w[0];
+    if(c0 == 0 && c1 == 0 && c2 == 0) ++degenerate;
+  }
+  info.degenerate_faces = degenerate;
+  if(degenerate > 0)
+    info.warnings.push_back(std::to_string(degenerate) + " faces have zero area (collinear corners); kept");
+}
+
+
+} // namespace internal
+
+/*!
+  \brief builds `mesh` from a validated triangle soup, keeping the vertex and face numbering, with
+  `halfedge(f, mesh)` pointing to the first vertex of each face.
+
+  The soup is validated first (see the file documentation); `mesh` is cleared.
+  \throws Input_error on invalid input, with the line of the offending face or vertex when known.
+*/
+template <class Point>
+void triangle_soup_to_mesh(const Triangle_soup& soup, CGAL::Surface_mesh<Point>& mesh, Mesh_read_info& info,
+                           const std::string& file)
+{
+  typedef CGAL::Surface_mesh<Point> Mesh;
+  typedef typename Mesh::Vertex_index Vertex_index;
+  typedef typename Mesh::Halfedge_index Halfedge_index;
+  typedef typename Mesh::size_type size_type;
+  std::vector<std::uint32_t> twin;
+  internal::check_triangle_soup(soup, file, info, twin);
+  // The soup is a valid oriented 2-manifold (with border), so the halfedge structure is wired directly
+  // (CGAL::Euler::add_face() searches and checks every edge again: half of the reading time at 1M
+  // faces). Edges are created in the order Euler::add_face() creates them, face by face, the face's
+  // halfedge first: the same indices as the face-by-face construction.
+  mesh.clear();
+  const std::size_t nv = soup.points.size(), nf = soup.triangles.size();
+  mesh.reserve(static_cast<size_type>(nv), static_cast<size_type>(nf * 3 / 2 + 3), static_cast<size_type>(nf));
+  for(const auto& p : soup.points)
+    mesh.add_vertex(Point(p[0], p[1], p[2]));
+  auto vertex = [&](std::size_t f, int k) { return Vertex_index(static_cast<size_type>(soup.triangles[f][k % 3])); };
+  std::vector<Halfedge_index> he(3 * nf);   // by corner: the halfedge from vertex k to vertex k + 1
+  for(std::size_t c = 0; c < 3 * nf; ++c)
+    he[c] = twin[c] != internal::no_twin && twin[c] < c ? mesh.opposite(he[twin[c]]) : mesh.add_edge();
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    const auto fi = mesh.add_face();
+    for(int k = 0; k < 3; ++k)
+    {
+      const Halfedge_index h = he[3 * f + k];
+      mesh.set_target(h, vertex(f, k + 1));
+      mesh.set_next(h, he[3 * f + (k + 1) % 3]);
+      mesh.set_face(h, fi);
+      mesh.set_halfedge(vertex(f, k + 1), h);
+    }
+    mesh.set_halfedge(fi, he[3 * f + 2]);   // the halfedge that points to the face's first vertex
+  }
+  // border halfedges: g runs b -> a opposite a face's a -> b; at a manifold border vertex exactly one
+  // border halfedge leaves and one arrives, and halfedge(v) is the arriving one
+  std::vector<Halfedge_index> border_out(nv);
+  for(std::size_t c = 0; c < 3 * nf; ++c)
+    if(twin[c] == internal::no_twin)
+    {
+      const Halfedge_index g = mesh.opposite(he[c]);
+      mesh.set_target(g, vertex(c / 3, int(c % 3)));
+      mesh.set_face(g, Mesh::null_face());
+      border_out[soup.triangles[c / 3][(c + 1) % 3]] = g;
+    }
+  for(std::size_t c = 0; c < 3 * nf; ++c)
+    if(twin[c] == internal::no_twin)
+    {
+      const Halfedge_index g = mesh.opposite(he[c]);
+      const Vertex_index a = vertex(c / 3, int(c % 3));
+      mesh.set_next(g, border_out[std::size_t(a)]);
+      mesh.set_halfedge(a, g);
+    }
+}
+
+} // namespace IO
+} // namespace Surface_winding_numbers
+} // namespace CGAL
+
+#endif // CGAL_SWN_TOOL_IO_MESH_SOUP_H
