@@ -1,0 +1,594 @@
+// test_core: the linear solves (JumpLaplace, NestedDissection, Derivatives, HarmonicPart).
+#include "test_core_support.h"
+
+// =============================================================================================
+// JumpLaplace (jump_laplace.h)
+// =============================================================================================
+
+TEST(JumpLaplace, ChainBoundaryAndInteriorEndpoints)
+{
+  // a path between interior vertices traversed twice, a path from the border into the mesh and a
+  // closed loop: the boundary counts arrivals minus departures, and only vertices off the border
+  // with a boundary are interior endpoints
+  const Grid_tables g(8, 2, 0.);
+  const SI::Mesh_tables& t = g.tables();
+  const std::vector<Vertex> inner = {g.V(2, 4), g.V(3, 4), g.V(4, 4), g.V(5, 4), g.V(6, 4)},
+                            from_border = {g.V(0, 2), g.V(1, 2), g.V(2, 2), g.V(3, 2)};
+  const std::vector<double> chain = g.chain({inner, inner, from_border, square_loop(g.vs, g.n, 5, 5, 7, 7)});
+  std::map<Vertex, long> expected = {{g.V(2, 4), -2}, {g.V(6, 4), 2}, {g.V(0, 2), -1}, {g.V(3, 2), 1}};
+  const std::vector<double> d = SI::chain_boundary(t, chain);
+  std::vector<int> integer_chain(chain.begin(), chain.end());
+  const std::vector<long> dl = SI::chain_boundary<long>(t, integer_chain);
+  const std::vector<char> endpoint = SI::interior_endpoints(t, chain);
+  for(Vertex v : vertices(g.mesh))
+  {
+    const std::size_t i = g.solver->vertex_index(v);
+    const long x = expected.count(v) ? expected[v] : 0;
+    EXPECT_EQ(d[i], double(x)) << "vertex " << v;
+    EXPECT_EQ(dl[i], x) << "vertex " << v;
+    EXPECT_EQ(endpoint[i] != 0, x != 0 && v != g.V(0, 2)) << "vertex " << v;
+  }
+}
+
+TEST(JumpLaplace, ReducedCoordinatesRealiseTheJumps)
+{
+  const Grid_tables g(12, 3);
+  const SI::Mesh_tables& t = g.tables();
+  // an open path (two interior endpoints) plus a closed loop crossing it
+  std::vector<Vertex> path, loop = square_loop(g.vs, g.n, 2, 2, 8, 7);
+  for(int i = 1; i <= 10; ++i) path.push_back(g.V(i, 5));
+  const std::vector<double> chain = g.chain({path, loop});
+  const std::vector<char> endpoint = SI::interior_endpoints(t, chain);
+  EXPECT_EQ(std::count(endpoint.begin(), endpoint.end(), 1), 2);
+  const std::vector<double> jumps = SI::arc_jumps_from_chain(t, chain);
+  const std::vector<double> c = SI::reduced_coordinates(t, jumps, endpoint);
+  for(std::size_t a = 0; a < t.arcs.size(); ++a)
+    for(int k = 0; k < 2; ++k)
+    {
+      const std::size_t v = t.ev[2 * t.arcs[a].edge + k];
+      if(endpoint[v]) continue;
+      EXPECT_NEAR(SI::corner_jump_at(t, c, a, k), chain[t.arcs[a].edge], 1e-14);
+    }
+}
+
+TEST(JumpLaplace, ClosedLoopGivesTwoValuedFunctionAndExactJumps)
+{
+  const Grid_tables g(16, 5);
+  const SI::Mesh_tables& t = g.tables();
+  const std::vector<double> chain = g.chain({square_loop(g.vs, g.n, 4, 3, 11, 12)});
+  const std::vector<char> endpoint = SI::interior_endpoints(t, chain);
+  std::vector<double> w;
+  SI::cotan_weights(t, w);
+  SI::Jump_laplace_system<LA> L;
+  L.jump_laplacian(t, w, endpoint);
+  EXPECT_EQ(L.size(), t.nv - 1);   // one pinned vertex
+  const std::vector<double> u = L.solve_jump_laplace(SI::reduced_coordinates(t, SI::arc_jumps_from_chain(t, chain), endpoint));
+  double lo = 1e9, hi = -1e9;
+  for(double x : u) { lo = std::min(lo, x); hi = std::max(hi, x); }
+  EXPECT_NEAR(hi - lo, 1., 1e-9);
+  for(std::size_t a = 0; a < t.arcs.size(); ++a)
+    for(int k = 0; k < 2; ++k) EXPECT_NEAR(SI::corner_jump_at(t, u, a, k), chain[t.arcs[a].edge], 1e-9);
+  // omega = D u vanishes for a two-valued u
+  for(double o : SI::darboux_derivative(t, u, endpoint)) EXPECT_NEAR(o, 0., 1e-9);
+}
+
+TEST(JumpLaplace, SolutionIsLinearInTheJumpsAndConstantWithoutThem)
+{
+  // one factorization on a torus (nothing excluded): reduced coordinates without jumps (a vertex
+  // function) give a constant u, and u is linear in the prescribed jumps
+  const Torus_tables torus(16, 9);
+  const SI::Mesh_tables& t = torus.tables();
+  const std::vector<char> none(t.nv, 0);
+  SI::Jump_laplace_system<LA> L;
+  L.jump_laplacian(t, torus.w, none);
+  const std::vector<double> phi = random_values(t.nv, 5);
+  std::vector<double> c(3 * t.nf);
+  for(std::size_t k = 0; k < c.size(); ++k) c[k] = phi[t.fv[k]];
+  const std::vector<double> u = L.solve_jump_laplace(c);
+  EXPECT_LT(*std::max_element(u.begin(), u.end()) - *std::min_element(u.begin(), u.end()), 1e-9);
+  EXPECT_LT(max_abs(L.solve_jump_laplace(std::vector<double>(3 * t.nf, 0.))), 1e-12);
+
+  const std::vector<double> loop = torus.chain({rect_loop(torus_vertex(torus.vs, 9), 3, 2, 7, 5)});
+  const std::vector<double> meridian = torus.chain({meridian_piece(torus.vs, 9, 11, 0, 9)});
+  std::vector<double> both(t.ne);
+  for(std::size_t e = 0; e < t.ne; ++e) both[e] = loop[e] - 2 * meridian[e];
+  auto solve = [&](const std::vector<double>& chain) {
+    return L.solve_jump_laplace(SI::reduced_coordinates(t, SI::arc_jumps_from_chain(t, chain), none));
+  };
+  const std::vector<double> u1 = solve(loop), u2 = solve(meridian), u12 = solve(both);
+  EXPECT_GT(max_abs(u2), 0.1);
+  for(std::size_t k = 0; k < u12.size(); ++k) EXPECT_NEAR(u12[k], u1[k] - 2 * u2[k], 1e-9) << "corner " << k;
+}
+
+namespace {
+// sparse solver traits without an Eigen solver() accessor: solve_columns() then solves column by column
+struct Opaque_solver_traits
+{
+  typedef LA::Matrix Matrix;
+  typedef LA::Vector Vector;
+  typedef LA::NT NT;
+  bool factor(const Matrix& A, NT& D) { return la.factor(A, D); }
+  bool linear_solver(const Vector& B, Vector& X) { return la.linear_solver(B, X); }
+  LA la;
+};
+} // namespace
+
+TEST(JumpLaplace, ManyColumnSolveAgreesWithColumnByColumn)
+{
+  // more right-hand sides than one block of the many-column solve, the last block partial
+  const Torus_tables torus(16, 9);
+  const SI::Mesh_tables& t = torus.tables();
+  const std::vector<double>& w = torus.w;
+  const std::vector<char> none(t.nv, 0);
+  SI::Jump_laplace_system<LA> A;
+  SI::Jump_laplace_system<Opaque_solver_traits> B;
+  A.jump_laplacian(t, w, none);
+  B.jump_laplacian(t, w, none);
+  const std::size_t k = SI::vertex_laplace_block + 3;
+  const auto rhs = [&](std::size_t j, std::vector<double>& b) {   // zero sum: in the range of the Laplacian
+    b[(7 * j + 1) % t.nv] += 1;
+    b[(11 * j + 40) % t.nv] -= 1;
+  };
+  const std::vector<double> xa = A.solve_vertex_laplace(k, rhs), xb = B.solve_vertex_laplace(k, rhs);
+  ASSERT_EQ(xa.size(), k * t.nv);
+  ASSERT_EQ(xb.size(), k * t.nv);
+  double largest = 0;
+  for(std::size_t i = 0; i < k * t.nv; ++i)
+  {
+    EXPECT_NEAR(xa[i], xb[i], 1e-10);
+    largest = std::max(largest, std::abs(xa[i]));
+  }
+  EXPECT_GT(largest, 0.01);
+  // every column solves L x_j = b_j at every vertex (the pinned one too, as b_j sums to zero)
+  for(std::size_t j = 0; j < k; ++j)
+  {
+    std::vector<double> Lx(t.nv, 0.), b(t.nv, 0.);
+    rhs(j, b);
+    const double* x = xa.data() + j * t.nv;
+    for(std::size_t f = 0; f < t.nf; ++f)
+      for(std::size_t c = 0; c < 3; ++c)
+      {
+        const std::size_t side = 3 * f + c, a = t.tail(side), h = t.head(side);
+        Lx[a] += w[side] * (x[a] - x[h]);
+        Lx[h] += w[side] * (x[h] - x[a]);
+      }
+    for(std::size_t v = 0; v < t.nv; ++v) EXPECT_NEAR(Lx[v], b[v], 1e-9) << "column " << j << ", vertex " << v;
+  }
+}
+
+namespace {
+// Runs `owner` on one thread and share.help() on another, the helper started before the owner
+// (helper_first) or after it: the two orders in which the Hodge step's threads may meet.
+void run_with_a_helper(SI::Shared_work& share, bool helper_first, const std::function<void()>& owner)
+{
+  std::thread helper;
+  if(helper_first) helper = std::thread([&] { share.help(); });   // waits for the work to be published
+  std::thread owning(owner);
+  if(!helper_first) helper = std::thread([&] { share.help(); });
+  owning.join();
+  helper.join();
+}
+} // namespace
+
+TEST(JumpLaplace, ManyColumnSolveSharedWithAHelperThreadGivesTheSameColumns)
+{
+  // the Hodge step's many-column solve, its blocks shared with a thread that calls help() (as the
+  // solving thread does once it has solved for u), against the same solve alone: the same blocks
+  // go through the same solves, so the columns agree exactly whichever thread solved them
+  const Torus_tables torus(24, 13);
+  const SI::Mesh_tables& t = torus.tables();
+  SI::Jump_laplace_system<LA> A;
+  A.jump_laplacian(t, torus.w, std::vector<char>(t.nv, 0));
+  const std::size_t k = 4 * SI::vertex_laplace_block + 5;
+  const auto rhs = [&](std::size_t j, std::vector<double>& b) {
+    b[(13 * j + 3) % t.nv] += 1;
+    b[(29 * j + 70) % t.nv] -= 1;
+  };
+  const std::vector<double> alone = A.solve_vertex_laplace(k, rhs);
+  for(int helper_first = 0; helper_first < 2; ++helper_first)
+  {
+    SI::Shared_work share;
+    std::vector<double> shared;
+    run_with_a_helper(share, helper_first == 1, [&] {
+      shared = A.solve_vertex_laplace(k, rhs, &share);
+      share.finish();
+    });
+    ASSERT_EQ(shared.size(), alone.size());
+    for(std::size_t i = 0; i < alone.size(); ++i) ASSERT_EQ(shared[i], alone[i]) << "entry " << i;
+  }
+}
+
+TEST(JumpLaplace, SharedWorkIsDoneOnceAndHelpersNeverWaitForever)
+{
+  // every piece done once, and all of them when run() returns (the owner then reads the results),
+  // whether the helper joins before the work is published or after; a helper that comes after
+  // finish() returns at once
+  for(int helper_first = 0; helper_first < 2; ++helper_first)
+  {
+    SI::Shared_work share;
+    const std::size_t pieces = 2000;
+    std::vector<int> done(pieces, 0);
+    std::atomic<std::size_t> next(0);
+    const std::function<void()> work = [&] {
+      for(std::size_t p; (p = next.fetch_add(1)) < pieces;) ++done[p];
+    };
+    std::size_t done_at_return = 0;
+    run_with_a_helper(share, helper_first == 1, [&] {
+      share.run(work);
+      done_at_return = std::size_t(std::count(done.begin(), done.end(), 1));
+      share.finish();
+    });
+    EXPECT_EQ(done_at_return, pieces);
+    for(std::size_t p = 0; p < pieces; ++p) ASSERT_EQ(done[p], 1) << "piece " << p;
+  }
+  SI::Shared_work finished;
+  finished.finish();
+  finished.help();   // returns: nothing will be published
+  SI::Shared_work never_published;
+  std::thread owner([&] { never_published.finish(); });   // as the Hodge thread does when it needs no basis
+  never_published.help();
+  owner.join();
+}
+
+// =============================================================================================
+// NestedDissection (nested_dissection.h)
+// =============================================================================================
+
+namespace {
+// entries of the Cholesky factor of (graph Laplacian + I) eliminated in `order` (nullptr: by node)
+long cholesky_fill(std::size_t n, const std::vector<std::size_t>& first, const std::vector<std::size_t>& adjacent,
+                   const std::vector<std::size_t>* order, bool amd = false)
+{
+  std::vector<int> pos(n);
+  for(std::size_t k = 0; k < n; ++k) pos[order ? (*order)[k] : k] = int(k);
+  std::vector<Eigen::Triplet<double>> T;
+  for(std::size_t v = 0; v < n; ++v)
+  {
+    T.emplace_back(pos[v], pos[v], 1. + double(first[v + 1] - first[v]));
+    for(std::size_t k = first[v]; k < first[v + 1]; ++k) T.emplace_back(pos[v], pos[adjacent[k]], -1.);
+  }
+  Eigen::SparseMatrix<double> A(static_cast<int>(n), static_cast<int>(n));
+  A.setFromTriplets(T.begin(), T.end());
+  if(amd)
+  {
+    Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>> llt(A);
+    Eigen::SparseMatrix<double> L = llt.matrixL();
+    return L.nonZeros();
+  }
+  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>> llt(A);
+  Eigen::SparseMatrix<double> L = llt.matrixL();
+  return L.nonZeros();
+}
+
+} // namespace
+
+TEST(NestedDissection, OrdersAreFillReducingPermutations)
+{
+  // the nested-dissection orders of both Laplacians' graphs: permutations of the vertices and of the faces whose
+  // Cholesky fill is a fraction of the mesh's own numbering's and near AMD's (on a 150 x 150 grid:
+  // 1.1-1.3x AMD's; the nested dissection pays above 150k unknowns, where it is used)
+  const Grid_tables g(150);
+  const SI::Mesh_tables& t = g.tables();
+  for(int faces = 0; faces < 2; ++faces)
+  {
+    const std::size_t n = faces ? t.nf : t.nv;
+    // below nested_dissection_unknowns the mesh's numbering is kept (and CHOLMOD orders by AMD)
+    EXPECT_TRUE((faces ? SI::face_elimination_order(t) : SI::vertex_elimination_order(t)).empty());
+    std::vector<double> xyz = t.points;
+    if(faces)
+    {
+      xyz.assign(3 * t.nf, 0.);
+      for(std::size_t c = 0; c < 3 * t.nf; ++c)
+        for(int k = 0; k < 3; ++k) xyz[3 * (c / 3) + k] += t.points[3 * t.fv[c] + k] / 3;
+    }
+    // the graph: mesh edges, or faces across interior edges
+    std::vector<std::vector<std::size_t>> nb(n);
+    for(std::size_t e = 0; e < t.ne; ++e)
+    {
+      if(!faces) { nb[t.ev[2 * e]].push_back(t.ev[2 * e + 1]); nb[t.ev[2 * e + 1]].push_back(t.ev[2 * e]); continue; }
+      for(std::size_t i = t.edge_side_begin[e]; i < t.edge_side_begin[e + 1]; ++i)
+        for(std::size_t j = t.edge_side_begin[e]; j < t.edge_side_begin[e + 1]; ++j)
+          if(i != j) nb[t.edge_sides[i] / 3].push_back(t.edge_sides[j] / 3);
+    }
+    std::vector<std::size_t> first(1, 0), adjacent;
+    for(const auto& a : nb) { adjacent.insert(adjacent.end(), a.begin(), a.end()); first.push_back(adjacent.size()); }
+    const std::vector<std::size_t> order = SI::nested_dissection_order(first, adjacent, xyz);
+    expect_permutation(order, n);
+    if(::testing::Test::HasFatalFailure()) return;
+    const long nd = cholesky_fill(n, first, adjacent, &order);
+    const long own = cholesky_fill(n, first, adjacent, nullptr);
+    const long amd = cholesky_fill(n, first, adjacent, nullptr, true);
+    EXPECT_LT(3 * nd, own) << (faces ? "faces" : "vertices");
+    EXPECT_LT(double(nd), 1.5 * double(amd)) << (faces ? "faces" : "vertices");
+    std::cout << (faces ? "faces" : "vertices") << ": fill " << nd << " (mesh order " << own << ", AMD " << amd << ")\n";
+  }
+}
+
+// =============================================================================================
+// Derivatives (derivatives.h): Darboux derivative D, jump derivative J
+// =============================================================================================
+
+TEST(Derivatives, DarbouxDerivativeOfAVertexFunctionIsItsDifferential)
+{
+  // a torus and a disk in one mesh. f = phi(vertex) * s(face), with s = 1 or 3 per face: D f is
+  // d phi times the mean of s over the edge's faces; with s = 1 and any per-face constant added, d phi
+  // exactly (D does not see jumps); 0 for a constant, and 0 on the edges of excluded vertices
+  Mesh m;
+  torus_mesh(m, 10, 6);
+  grid_disk(m, 5, 2);
+  Solver s(m);
+  const SI::Mesh_tables& t = s.tables();
+  const std::vector<double> phi = random_values(t.nv, 1), offset = random_values(t.nf, 2, -5, 5);
+  const std::vector<double> dphi = differential(t, phi);
+  const std::vector<char> none(t.nv, 0);
+  std::vector<double> f(3 * t.nf), scaled(3 * t.nf);
+  for(std::size_t c = 0; c < f.size(); ++c)
+  {
+    f[c] = phi[t.fv[c]] + offset[c / 3];
+    scaled[c] = phi[t.fv[c]] * (c / 3 % 3 == 0 ? 3. : 1.);
+  }
+  const std::vector<double> omega = SI::darboux_derivative(t, f, none);
+  for(std::size_t e = 0; e < t.ne; ++e) EXPECT_NEAR(omega[e], dphi[e], 1e-12) << "edge " << e;
+  EXPECT_EQ(max_abs(SI::darboux_derivative(t, std::vector<double>(3 * t.nf, 2.5), none)), 0.);
+
+  const std::vector<double> omega_scaled = SI::darboux_derivative(t, scaled, none);
+  for(std::size_t e = 0; e < t.ne; ++e)
+  {
+    double mean = 0;
+    const std::size_t n_sides = t.edge_side_begin[e + 1] - t.edge_side_begin[e];
+    for(std::size_t i = t.edge_side_begin[e]; i < t.edge_side_begin[e + 1]; ++i) mean += (t.edge_sides[i] / 3 % 3 == 0 ? 3. : 1.) / double(n_sides);
+    EXPECT_NEAR(omega_scaled[e], mean * dphi[e], 1e-12) << "edge " << e;
+  }
+
+  std::vector<char> excluded(t.nv, 0);
+  excluded[t.ev[0]] = excluded[t.ev[2 * (t.ne - 1)]] = 1;
+  const std::vector<double> omega_excluded = SI::darboux_derivative(t, f, excluded);
+  std::size_t zeroed = 0;
+  for(std::size_t e = 0; e < t.ne; ++e)
+  {
+    if(excluded[t.ev[2 * e]] || excluded[t.ev[2 * e + 1]]) { EXPECT_EQ(omega_excluded[e], 0.); ++zeroed; }
+    else { EXPECT_EQ(omega_excluded[e], omega[e]); }
+  }
+  EXPECT_GE(zeroed, 6u);
+}
+
+TEST(Derivatives, JumpDerivativeOfARegionIndicatorIsItsBoundary)
+{
+  // f = 1 inside a counter-clockwise loop, 0 outside: J f (left minus right) is the loop's chain, 0 on
+  // border edges; a vertex function has no jump; the jump at either end of an arc is left minus right
+  const int n = 8;
+  const Grid_tables g(n, 4);
+  const SI::Mesh_tables& t = g.tables();
+  const std::vector<double> loop = g.chain({square_loop(g.vs, n, 2, 1, 6, 5)});
+  std::vector<double> inside(t.nf);
+  const std::vector<char> in = faces_in_rect(t, 2. / n, 1. / n, 6. / n, 5. / n);
+  for(std::size_t f = 0; f < t.nf; ++f) inside[f] = in[f];
+  EXPECT_EQ(std::count(in.begin(), in.end(), 1), 2 * 4 * 4);
+  EXPECT_EQ(SI::jump_derivative(t, per_corner(inside)), loop);
+  EXPECT_EQ(SI::jump_derivative(t, negated(per_corner(inside))), negated(loop));
+
+  const std::vector<double> phi = random_values(t.nv, 3);
+  std::vector<double> single_valued(3 * t.nf), f = random_values(3 * t.nf, 4);
+  for(std::size_t c = 0; c < single_valued.size(); ++c) single_valued[c] = phi[t.fv[c]];
+  EXPECT_EQ(max_abs(SI::jump_derivative(t, single_valued)), 0.);
+  const std::vector<double> Jf = SI::jump_derivative(t, f);
+  for(std::size_t a = 0; a < t.arcs.size(); ++a)
+  {
+    const SI::Arc& arc = t.arcs[a];
+    double J[2];
+    for(int k = 0; k < 2; ++k)
+    {
+      const std::size_t v = t.ev[2 * arc.edge + k];
+      J[k] = f[corner_of(t, arc.left_side / 3, v)] - f[corner_of(t, arc.right_side / 3, v)];
+      EXPECT_EQ(SI::corner_jump_at(t, f, a, k), J[k]);
+    }
+    EXPECT_DOUBLE_EQ(Jf[arc.edge], 0.5 * (J[0] + J[1]));
+  }
+  for(std::size_t e = 0; e < t.ne; ++e)
+    if(t.edge_on_border[e]) EXPECT_EQ(Jf[e], 0.);
+}
+
+// =============================================================================================
+// HarmonicPart (harmonic_part.h)
+// =============================================================================================
+
+namespace {
+// the period of a 1-form (per table edge) along a closed vertex loop
+double period(const Mesh& m, const Solver& s, const std::vector<Vertex>& loop, const std::vector<double>& form)
+{
+  double sum = 0;
+  for(std::size_t i = 0; i < loop.size(); ++i)
+  {
+    const auto h = halfedge(loop[i], loop[(i + 1) % loop.size()], m);
+    if(!h.second)
+    {
+      ADD_FAILURE() << "consecutive loop vertices are not joined by an edge";
+      return NaN;   // fails every comparison that follows
+    }
+    const std::size_t e = s.edge_index(edge(h.first, m));
+    sum += (s.tables().ev[2 * e] == s.vertex_index(loop[i]) ? 1. : -1.) * form[e];
+  }
+  return sum;
+}
+
+// d0^T S1 form per vertex (the divergence of the form)
+std::vector<double> codifferential(const SI::Mesh_tables& t, const std::vector<double>& star, const std::vector<double>& form)
+{
+  std::vector<double> d(t.nv, 0.);
+  for(std::size_t e = 0; e < t.ne; ++e)
+  {
+    d[t.ev[2 * e + 1]] += star[e] * form[e];
+    d[t.ev[2 * e]] -= star[e] * form[e];
+  }
+  return d;
+}
+
+// omega = D u (Eq. 5) of the first jump Laplace solve of a table chain; `w` gets the cotan weights
+std::vector<double> omega_of_chain(const SI::Mesh_tables& t, const std::vector<double>& chain, std::vector<double>& w)
+{
+  const std::vector<char> endpoint = SI::interior_endpoints(t, chain);
+  SI::cotan_weights(t, w);
+  SI::Jump_laplace_system<LA> L;
+  L.jump_laplacian(t, w, endpoint);
+  const std::vector<double> u = L.solve_jump_laplace(SI::reduced_coordinates(t, SI::arc_jumps_from_chain(t, chain), endpoint));
+  return SI::darboux_derivative(t, u, endpoint);
+}
+
+// both Hodge projections of a mesh: the harmonic basis (with the 0-form Laplacian it needs) and
+// the 2-form Laplacian; `star` and the cotan weights `w` of the tables
+struct Hodge_projections
+{
+  std::vector<double> w, star;
+  SI::Cohomology_generators gen;
+  SI::Jump_laplace_system<LA> L0;   // nothing excluded: the 0-form Laplacian
+  SI::Harmonic_basis<LA> basis;
+  SI::Two_form_laplacian<LA> B;
+  explicit Hodge_projections(const SI::Mesh_tables& t)
+  {
+    SI::cotan_weights(t, w);
+    star = SI::edge_hodge_star(t, w);
+    gen = SI::cohomology_generators(t);
+    L0.jump_laplacian(t, w, std::vector<char>(t.nv, 0));
+    basis.assemble(t, star, gen, L0);   // throws if the Gram matrix of the h_k is singular
+    B.assemble(t, star);
+  }
+};
+} // namespace
+
+TEST(HarmonicPart, GammaIsClosedToRoundOffAndKeepsThePeriod)
+{
+  const int nu = 24, nv = 12;
+  const Torus_tables torus(nu, nv);
+  const SI::Mesh_tables& t = torus.tables();
+  const std::vector<Vertex>& vs = torus.vs;
+  // a meridian with a 2-edge gap
+  const std::vector<double> chain = torus.chain({meridian_piece(vs, nv, 3, 0, 4), meridian_piece(vs, nv, 3, 6, nv)});
+  std::vector<double> w;
+  const std::vector<double> omega = omega_of_chain(t, chain, w);
+  const std::vector<double> star = SI::edge_hodge_star(t, w);
+  SI::Two_form_laplacian<LA> B;
+  B.assemble(t, star);
+  const std::vector<double> gamma = B.harmonic_part(omega);
+  EXPECT_GT(max_abs(SI::face_curl(t, omega)), 1e-3);
+  EXPECT_LT(max_abs(SI::face_curl(t, gamma)), 1e-12);
+  // the period of gamma along a longitude (a loop crossing the meridian once) is in (0, 1]
+  std::vector<Vertex> longitude;
+  for(int i = 0; i < nu; ++i) longitude.push_back(vs[i * nv + 6]);
+  const double p = period(torus.mesh, *torus.solver, longitude, gamma);
+  EXPECT_GT(std::abs(p), 0.3);
+  EXPECT_LE(std::abs(p), 1. + 1e-9);
+}
+
+TEST(HarmonicPart, CohomologyGeneratorsSpanTheClassesOfEveryComponent)
+{
+  // one mesh, two components: a torus (2 classes) and a torus with two holes (2g + b - 1 = 3)
+  Mesh m;
+  const int nu = 12, nv = 8;
+  const auto vs = torus_mesh(m, nu, nv);
+  torus_mesh(m, 14, 9);
+  for(int f : {2 * nu * nv + 10, 2 * nu * nv + 130}) CGAL::Euler::remove_face(halfedge(Mesh::Face_index(f), m), m);
+  m.collect_garbage();
+  Solver s(m);
+  const SI::Mesh_tables& t = s.tables();
+  ASSERT_EQ(t.n_components, 2u);
+  const Hodge_projections hodge(t);
+  const SI::Cohomology_generators& gen = hodge.gen;
+  EXPECT_TRUE(gen.complete);
+  ASSERT_EQ(gen.size(), 5u);
+  std::vector<std::size_t> classes(2, 0);
+  for(std::size_t e : gen.edges) ++classes[t.face_component[t.edge_sides[t.edge_side_begin[e]] / 3]];
+  EXPECT_EQ(classes[t.face_component[0]], 2u);
+  EXPECT_EQ(classes[1 - t.face_component[0]], 3u);
+  ASSERT_TRUE(hodge.basis.assembled());
+  const std::vector<Vertex> meridian = meridian_piece(vs, nv, 3, 0, nv - 1);
+  std::vector<Vertex> longitude;
+  for(int i = 0; i < nu; ++i) longitude.push_back(vs[std::size_t(i * nv + 5)]);
+  double largest_period = 0;
+  for(std::size_t k = 0; k < gen.size(); ++k)
+  {
+    std::vector<double> zeta(t.ne, 0.);
+    for(const auto& z : gen.closed_form(t, k))
+    {
+      EXPECT_EQ(std::abs(z.second), 1.);
+      zeta[z.first] = z.second;
+    }
+    EXPECT_EQ(zeta[gen.edges[k]], 1.);
+    for(std::size_t j = 0; j < gen.size(); ++j)
+      if(j != k) EXPECT_EQ(zeta[gen.edges[j]], 0.);
+    EXPECT_EQ(max_abs(SI::face_curl(t, zeta)), 0.);   // exactly closed
+    // its harmonic part is closed and co-closed, a projection, and differs from zeta by an exact
+    // form: the same periods
+    const std::vector<double> h = hodge.basis.harmonic_part(zeta);
+    EXPECT_LT(max_abs(SI::face_curl(t, h)), 1e-12);
+    EXPECT_LT(max_abs(codifferential(t, hodge.star, h)), 1e-10);
+    const std::vector<double> hh = hodge.basis.harmonic_part(h);
+    for(std::size_t e = 0; e < t.ne; ++e) EXPECT_NEAR(hh[e], h[e], 1e-10);
+    for(const auto& loop : {meridian, longitude})
+    {
+      const double p = period(m, s, loop, zeta);
+      EXPECT_NEAR(period(m, s, loop, h), p, 1e-10);
+      largest_period = std::max(largest_period, std::abs(p));
+    }
+  }
+  EXPECT_EQ(largest_period, 1.);   // the torus's classes are dual to its meridian and longitude
+}
+
+TEST(HarmonicPart, ExactAndCoexactFormsHaveNoHarmonicPart)
+{
+  // the Hodge decomposition on a torus: an exact form d phi, a coexact form S1^-1 d1^T beta and a
+  // harmonic form h. The projection on the harmonic basis keeps h only; the 2-form Laplacian removes
+  // the coexact part only (the exact part of a Darboux derivative is zero, App. A)
+  const Torus_tables torus(16, 9);
+  const SI::Mesh_tables& t = torus.tables();
+  const Hodge_projections hodge(t);
+  const std::vector<double> exact = differential(t, random_values(t.nv, 6));
+  const std::vector<double> beta = random_values(t.nf, 7);
+  std::vector<double> coexact(t.ne, 0.), zeta(t.ne, 0.);
+  for(std::size_t side = 0; side < 3 * t.nf; ++side) coexact[t.fe[side]] += t.fs[side] * beta[side / 3] / hodge.star[t.fe[side]];
+  for(const auto& z : hodge.gen.closed_form(t, 0)) zeta[z.first] = z.second;
+  const std::vector<double> h = hodge.basis.harmonic_part(zeta);
+  EXPECT_GT(max_abs(h), 0.01);
+  EXPECT_GT(max_abs(SI::face_curl(t, coexact)), 0.1);
+
+  EXPECT_LT(max_abs(hodge.basis.harmonic_part(exact)), 1e-9);
+  EXPECT_LT(max_abs(hodge.basis.harmonic_part(coexact)), 1e-9);
+  const std::vector<double> exact_by_B = hodge.B.harmonic_part(exact);   // closed: nothing to remove
+  for(std::size_t e = 0; e < t.ne; ++e) EXPECT_NEAR(exact_by_B[e], exact[e], 1e-12) << "edge " << e;
+  EXPECT_LT(max_abs(hodge.B.harmonic_part(coexact)), 1e-9);
+  std::vector<double> sum(t.ne);
+  for(std::size_t e = 0; e < t.ne; ++e) sum[e] = exact[e] + coexact[e] + h[e];
+  const std::vector<double> by_basis = hodge.basis.harmonic_part(sum), by_B = hodge.B.harmonic_part(sum);
+  for(std::size_t e = 0; e < t.ne; ++e)
+  {
+    EXPECT_NEAR(by_basis[e], h[e], 1e-9) << "edge " << e;
+    EXPECT_NEAR(by_B[e], exact[e] + h[e], 1e-9) << "edge " << e;
+  }
+}
+
+TEST(HarmonicPart, HarmonicBasisAndTwoFormLaplacianGiveTheSameGamma)
+{
+  // an open curve on a torus with a hole (2g + b - 1 = 2 classes): omega of the jump harmonic function has no exact part
+  // (App. A), so removing its coexact part (2-form Laplacian) and projecting on the harmonic forms
+  // give the same gamma
+  Mesh m;
+  const int nu = 20, nv = 10;
+  const auto vs = torus_mesh(m, nu, nv);
+  CGAL::Euler::remove_face(halfedge(Mesh::Face_index(2 * (12 * nv + 3)), m), m);
+  m.collect_garbage();
+  Solver s(m);
+  const SI::Mesh_tables& t = s.tables();
+  std::vector<Vertex> a = meridian_piece(vs, nv, 2, 0, 6), loop;
+  for(int i = 5; i <= 9; ++i) loop.push_back(vs[std::size_t(i * nv + 1)]);
+  for(int j = 2; j <= 4; ++j) loop.push_back(vs[std::size_t(9 * nv + j)]);
+  const std::vector<double> chain = table_chain(m, s, {a, loop});
+  const Hodge_projections hodge(t);
+  std::vector<double> w;
+  const std::vector<double> omega = omega_of_chain(t, chain, w);
+  ASSERT_TRUE(hodge.gen.complete);
+  EXPECT_EQ(hodge.gen.size(), 2u);
+  const std::vector<double> g1 = hodge.B.harmonic_part(omega), g2 = hodge.basis.harmonic_part(omega);
+  EXPECT_GT(max_abs(g1), 0.01);
+  for(std::size_t e = 0; e < t.ne; ++e) EXPECT_NEAR(g1[e], g2[e], 1e-9);
+  EXPECT_LT(max_abs(SI::face_curl(t, g2)), 1e-12);
+}
+
