@@ -27,7 +27,6 @@
 #include <CGAL/Surface_winding_numbers/internal/jump_laplace.h>
 #include <CGAL/Surface_winding_numbers/internal/nonbounding_chain.h>
 #include <CGAL/Surface_winding_numbers/internal/winding_number.h>
-#include <CGAL/Surface_winding_numbers/single_threaded_blas.h>
 
 #include <sys/resource.h>
 
@@ -158,7 +157,6 @@ long peak_rss_kb()
 
 int main(int argc, char** argv)
 {
-  SWN::use_single_threaded_openblas();   // as the swn tool does
   if(argc < 3)
   {
     std::cerr << "usage: swn_bench_solve CASE_DIR MESH_FILE [--check-api] [--lp default|glpk|reduced] [--epsilon X]\n";
