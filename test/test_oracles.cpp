@@ -1565,18 +1565,6 @@ void expect_chain_rejected(const Built_mesh<TM>& m, const Soup_chain& c, const c
   expect_rejected(r, m.tm, what);
 }
 
-// a mesh of TM from a soup of polygons
-template <class TM>
-void expect_polygon_soup_rejected(const std::vector<Point_3>& pts, const std::vector<std::vector<Index>>& polygons,
-                                  std::size_t faces, const char* what)
-{
-  TM tm;
-  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(pts, polygons, tm);
-  ASSERT_EQ(num_faces(tm), faces);
-  Raw_maps<TM> r(tm);
-  expect_rejected(r, tm, what);
-}
-
 // the disk (random diagonals when jittered) with vertex (i, j) moved to p, and the chain c
 template <class TM>
 void disk_with_a_moved_vertex_case(unsigned seed, double jitter, int i, int j, const Point_3& p, const Soup_chain& c,
@@ -1588,23 +1576,47 @@ void disk_with_a_moved_vertex_case(unsigned seed, double jitter, int i, int j, c
 }
 } // namespace
 
-TYPED_TEST(OraclesBadInput, QuadMesh)
+// Faces of more than three sides are triangulated internally (issue 32): a loop around the inner 2 x 2
+// cells of a 4 x 4 disk of quads (some cells cut into two triangles) gives exactly those cells label 1.
+TYPED_TEST(OraclesApi, QuadAndMixedMeshesLabelWholeFaces)
 {
+  typedef boost::graph_traits<TypeParam> GT;
   const int n = 4;
   std::vector<Point_3> pts;
-  std::vector<std::vector<Index>> quads;
   for(int j = 0; j <= n; ++j)
     for(int i = 0; i <= n; ++i) pts.emplace_back(double(i) / n, double(j) / n, 0.);
-  for(int j = 0; j < n; ++j)
-    for(int i = 0; i < n; ++i)
-      quads.push_back({disk_vid(n, i, j), disk_vid(n, i + 1, j), disk_vid(n, i + 1, j + 1), disk_vid(n, i, j + 1)});
-  expect_polygon_soup_rejected<TypeParam>(pts, quads, 16, "quad mesh");
-}
-
-TYPED_TEST(OraclesBadInput, MixedTriangleAndQuad)
-{
-  expect_polygon_soup_rejected<TypeParam>({Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(1, 1, 0), Point_3(0, 1, 0), Point_3(2, 0.5, 0)},
-                                          {{0, 1, 2, 3}, {1, 4, 2}}, 2, "mixed mesh");
+  for(bool mixed : {false, true})
+  {
+    std::vector<std::vector<Index>> polygons;
+    std::vector<bool> inside;
+    for(int j = 0; j < n; ++j)
+      for(int i = 0; i < n; ++i)
+      {
+        const Index a = disk_vid(n, i, j), b = disk_vid(n, i + 1, j), c = disk_vid(n, i + 1, j + 1), d = disk_vid(n, i, j + 1);
+        const bool in = i >= 1 && i < 3 && j >= 1 && j < 3;
+        if(mixed && (i + j) % 2 == 0) { polygons.push_back({a, b, c}); polygons.push_back({a, c, d}); inside.push_back(in); }
+        else polygons.push_back({a, b, c, d});
+        inside.push_back(in);
+      }
+    TypeParam tm;
+    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(pts, polygons, tm);
+    ASSERT_EQ(num_faces(tm), polygons.size());
+    const std::vector<typename GT::vertex_descriptor> vd(vertices(tm).begin(), vertices(tm).end());   // soup order
+    std::map<typename GT::edge_descriptor, int> chain_storage;
+    for(auto e : edges(tm)) chain_storage[e] = 0;
+    std::vector<typename GT::vertex_descriptor> polyline;
+    const std::vector<Index> loop = disk_rect_loop(n, 1, 1, 3, 3);
+    for(std::size_t k = 0; k <= loop.size(); ++k) polyline.push_back(vd[loop[k % loop.size()]]);
+    auto chain = boost::make_assoc_property_map(chain_storage);
+    ASSERT_TRUE(SWN::add_vertex_polyline_to_chain(tm, polyline, chain));
+    std::map<typename GT::face_descriptor, int> label_storage;
+    SWN::Solve_report report;
+    ASSERT_TRUE(CGAL::surface_winding_numbers(tm, chain, boost::make_assoc_property_map(label_storage),
+                                              SWN::parameters::report(std::ref(report)))) << report.error;
+    EXPECT_EQ(report.faces, polygons.size());
+    std::size_t k = 0;
+    for(auto f : faces(tm)) EXPECT_EQ(label_storage[f], inside[k++] ? 1 : 0) << (mixed ? "mixed" : "quads") << ", face " << k - 1;
+  }
 }
 
 TYPED_TEST(OraclesBadInput, EmptyMesh)

@@ -146,4 +146,6 @@ bool surface_winding_numbers(const TriangleMesh& tm, const ChainMap& chain, Labe
 
 } // namespace CGAL
 
+#include <CGAL/Surface_winding_numbers/polygon_soup_winding_numbers.h>
+
 #endif

@@ -8,6 +8,7 @@
 #include <CGAL/Surface_winding_numbers/parameters.h>
 #include <CGAL/Surface_winding_numbers/internal/locality_order.h>
 #include <CGAL/Surface_winding_numbers/internal/pipeline.h>
+#include <CGAL/Surface_winding_numbers/internal/polygon_tables.h>
 #ifdef CGAL_USE_GLPK
 #include <CGAL/Surface_winding_numbers/GLPK_linear_program_traits.h>
 #endif
@@ -30,6 +31,7 @@
 
 #include <exception>
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <type_traits>
@@ -170,6 +172,63 @@ typedef CHOLMOD_sparse_solver Default_sparse_solver;
 typedef Eigen_LDLT_sparse_solver Default_sparse_solver;
 #endif
 
+// Runs `f` (which fills `rep`), and turns its exceptions into the report's error: Invalid_input is
+// bad input, anything else a failed solve. Returns rep.success.
+template <class F>
+bool run_and_report(Solve_report& rep, F f)
+{
+  try
+  {
+    f();
+    rep.success = true;
+  }
+  catch(const Invalid_input& e)
+  {
+    rep.success = false;
+    rep.invalid_input = true;
+    rep.error = e.what();
+  }
+  catch(const std::exception& e)
+  {
+    rep.success = false;
+    rep.error = e.what();
+  }
+  return rep.success;
+}
+
+// One solve of `chain` (per table edge) with the settings of the named parameters: epsilon,
+// verbose, use_reduced_residual, concurrency, keep_hodge_factorization and lp_solver.
+template <class LA, class NamedParameters>
+Core_result solve_with_parameters(Winding_number_core<LA>& core, const std::vector<double>& chain,
+                                  const NamedParameters& np, Solve_report& rep)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using CGAL::parameters::get_parameter_reference;
+  namespace snp = Surface_winding_numbers::internal_np;
+  Solve_options options;
+  options.epsilon = choose_parameter(get_parameter(np, snp::epsilon), 0.01);
+  options.verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
+  options.reduced_residual = choose_parameter(get_parameter(np, snp::use_reduced_residual), false);
+  options.concurrent = allows_threads(choose_parameter(get_parameter(np, snp::concurrency), CGAL::Parallel_tag()));
+  options.keep_hodge_factorization = choose_parameter(get_parameter(np, snp::keep_hodge_factorization), true);
+  if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, snp::lp_solver_t>::value)
+  {
+    Default_linear_program_traits lp;
+    return core.solve(chain, options, lp, rep);
+  }
+  else
+    return core.solve(chain, options, get_parameter_reference(np, snp::lp_solver), rep);
+}
+
+// writes the report to the named parameter `report`, if given
+template <class NamedParameters>
+void write_report(const NamedParameters& np, const Solve_report& rep)
+{
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, Surface_winding_numbers::internal_np::report_t>::value)
+    CGAL::parameters::get_parameter_reference(np, Surface_winding_numbers::internal_np::report) = rep;
+}
+
 } // namespace internal
 /// \endcond
 
@@ -277,60 +336,21 @@ public:
   bool solve(const ChainMap& chain_map, LabelMap label_map,
              const NamedParameters& np = CGAL::parameters::default_values())
   {
-    using CGAL::parameters::choose_parameter;
-    using CGAL::parameters::get_parameter;
-    using CGAL::parameters::get_parameter_reference;
-    using CGAL::parameters::is_default_parameter;
-    namespace snp = Surface_winding_numbers::internal_np;
-
     const std::string construction_error = report_.error;
     Solve_report rep;
     if(core_) core_->fill_mesh_report(rep);
     rep.time_mesh = report_.time_mesh;   // every report carries the construction's time
-    try
-    {
+    internal::run_and_report(rep, [&] {
       if(!core_) throw Invalid_input(construction_error);   // the mesh was rejected by the constructor
-      internal::Solve_options options;
-      options.epsilon = choose_parameter(get_parameter(np, snp::epsilon), 0.01);
-      options.verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
-      options.reduced_residual = choose_parameter(get_parameter(np, snp::use_reduced_residual), false);
-      options.concurrent =
-        internal::allows_threads(choose_parameter(get_parameter(np, snp::concurrency), CGAL::Parallel_tag()));
-      options.keep_hodge_factorization = choose_parameter(get_parameter(np, snp::keep_hodge_factorization), true);
-
       std::vector<double> chain(core_->tables().ne, 0.);
       for(edge_descriptor e : edges(tm_)) chain[get(eim_, e)] = double(get(chain_map, e));
-
-      internal::Core_result r;
-      if constexpr(is_default_parameter<NamedParameters, snp::lp_solver_t>::value)
-      {
-        internal::Default_linear_program_traits lp;
-        r = core_->solve(chain, options, lp, rep);
-      }
-      else
-      {
-        auto& lp = get_parameter_reference(np, snp::lp_solver);
-        r = core_->solve(chain, options, lp, rep);
-      }
+      const internal::Core_result r = internal::solve_with_parameters(*core_, chain, np, rep);
       internal::Stopwatch clock;
       write_outputs(r, label_map, np);
       rep.time_output_maps = clock.lap();
-      rep.success = true;
-    }
-    catch(const Invalid_input& e)
-    {
-      rep.success = false;
-      rep.invalid_input = true;
-      rep.error = e.what();
-    }
-    catch(const std::exception& e)
-    {
-      rep.success = false;
-      rep.error = e.what();
-    }
+    });
     report_ = rep;
-    if constexpr(!is_default_parameter<NamedParameters, snp::report_t>::value)
-      get_parameter_reference(np, snp::report) = rep;
+    internal::write_report(np, rep);
     return rep.success;
   }
 
@@ -369,10 +389,13 @@ private:
       m.ev.push_back(get(vim_, target(h, tm_)));
     }
     m.ne = i;
+    bool triangles = true;
+    for(face_descriptor f : faces(tm_)) triangles = triangles && degree(f, tm_) == 3;
+    if(!triangles) return polygon_mesh_tables(std::move(m.points));
     i = 0;
     for(face_descriptor f : faces(tm_))
     {
-      put(fim_, f, i);
+      put(fim_, f, i++);
       halfedge_descriptor h = halfedge(f, tm_);
       for(int k = 0; k < 3; ++k)
       {
@@ -380,10 +403,6 @@ private:
         m.fe.push_back(get(eim_, edge(h, tm_)));
         h = next(h, tm_);
       }
-      if(h != halfedge(f, tm_))
-        throw Invalid_input("face " + std::to_string(i) + " is not a triangle (" +
-                            std::to_string(degree(f, tm_)) + " vertices): the mesh must be triangulated");
-      ++i;
     }
     m.nf = i;
     if(m.nf == 0) throw Invalid_input("the mesh has no face");
@@ -398,6 +417,36 @@ private:
     for(edge_descriptor e : edges(tm_)) put(eim_, e, n.edge[get(eim_, e)]);
     for(face_descriptor f : faces(tm_)) put(fim_, f, n.face[get(fim_, f)]);
     return internal::renumbered_mesh_tables(m, n);
+  }
+
+  // A mesh with faces of more than three sides: every face is triangulated (polygon_tables.h), the
+  // faces keep their order (the polygons), the edges are mapped to the tables' input edges.
+  internal::Mesh_tables polygon_mesh_tables(std::vector<double> xyz)
+  {
+    std::vector<std::vector<std::size_t>> polygons;
+    std::size_t i = 0;
+    for(face_descriptor f : faces(tm_))
+    {
+      put(fim_, f, i++);
+      polygons.emplace_back();
+      for(halfedge_descriptor h : halfedges_around_face(halfedge(f, tm_), tm_)) polygons.back().push_back(get(vim_, source(h, tm_)));
+    }
+    if(polygons.empty()) throw Invalid_input("the mesh has no face");
+    internal::Mesh_tables m = internal::polygon_mesh_tables(std::move(xyz), polygons);
+    std::map<std::pair<std::size_t, std::size_t>, std::size_t> table_edge;
+    for(std::size_t e = 0; e < m.ne; ++e)
+      table_edge[std::make_pair((std::min)(m.ev[2 * e], m.ev[2 * e + 1]), (std::max)(m.ev[2 * e], m.ev[2 * e + 1]))] = e;
+    for(edge_descriptor e : edges(tm_))
+    {
+      const std::size_t a = get(vim_, source(halfedge(e, tm_), tm_)), b = get(vim_, target(halfedge(e, tm_), tm_));
+      const auto it = table_edge.find(std::make_pair((std::min)(a, b), (std::max)(a, b)));
+      if(it == table_edge.end()) throw Invalid_input("edge (" + std::to_string(a) + ", " + std::to_string(b) + ") bounds no face");
+      // the table edge must run along halfedge(e): its values are signed that way
+      if(m.ev[2 * it->second] != a) std::swap(m.ev[2 * it->second], m.ev[2 * it->second + 1]);
+      put(eim_, e, it->second);
+    }
+    internal::finalize_mesh_tables(m);   // again: the edges' directions may have changed
+    return m;
   }
 
   // writes per-edge values to the edge map given for `tag`, if one was given
@@ -419,7 +468,8 @@ private:
     using CGAL::parameters::is_default_parameter;
     namespace snp = Surface_winding_numbers::internal_np;
     typedef typename boost::property_traits<LabelMap>::value_type Label;
-    for(face_descriptor f : faces(tm_)) put(label_map, f, static_cast<Label>(r.labels[get(fim_, f)]));
+    const internal::Mesh_tables& m = core_->tables();
+    for(face_descriptor f : faces(tm_)) put(label_map, f, static_cast<Label>(r.labels[m.polygon_triangle(get(fim_, f))]));
 
     write_edge_values<snp::nonbounding_chain_map_t>(np, snp::nonbounding_chain_map, r.G);
     write_edge_values<snp::nonbounding_chain_real_map_t>(np, snp::nonbounding_chain_real_map, r.g);
@@ -431,13 +481,10 @@ private:
       for(face_descriptor f : faces(tm_))
       {
         // side k of the face is the halfedge from corner k to corner k+1: its target is corner k+1
-        halfedge_descriptor h = halfedge(f, tm_);
-        const std::size_t fi = get(fim_, f);
-        for(int k = 0; k < 3; ++k)
-        {
-          put(map, h, static_cast<V>(r.w[3 * fi + (k + 1) % 3]));
-          h = next(h, tm_);
-        }
+        const std::size_t fi = get(fim_, f), d = degree(f, tm_);
+        std::size_t k = 0;
+        for(halfedge_descriptor h : halfedges_around_face(halfedge(f, tm_), tm_))
+          put(map, h, static_cast<V>(r.w[m.polygon_corner_at(fi, ++k % d)]));
       }
     }
   }

@@ -69,6 +69,23 @@ struct Mesh_tables
   std::vector<std::size_t> component_border_edges;
   std::vector<std::size_t> component_first_face;
 
+  // Polygon input (polygon_tables.h): the polygon of every triangle, and the diagonals added inside
+  // polygons ("virtual" edges: no curve along them, no jump of the residual function across them).
+  // Both empty when every input face is a triangle.
+  std::vector<std::size_t> face_polygon;
+  std::vector<char> edge_virtual;
+  // the corners of polygon p, in its order, are the table corners polygon_corner[polygon_begin[p] ..
+  // polygon_begin[p + 1]) (of the largest of its triangles at that vertex)
+  std::vector<std::size_t> polygon_begin, polygon_corner;
+  std::size_t number_of_polygons() const { return polygon_begin.empty() ? nf : polygon_begin.size() - 1; }
+  // the table corner of corner k of polygon p, and a triangle of p (all of them carry its label)
+  std::size_t polygon_corner_at(std::size_t p, std::size_t k) const
+  {
+    return polygon_begin.empty() ? 3 * p + k : polygon_corner[polygon_begin[p] + k];
+  }
+  std::size_t polygon_triangle(std::size_t p) const { return polygon_corner_at(p, 0) / 3; }
+  bool is_virtual(std::size_t e) const { return !edge_virtual.empty() && edge_virtual[e]; }
+
   // Index of every element in the input's numbering when the tables were renumbered
   // (locality_order.h); empty when the tables keep it. Error messages name elements by it.
   std::vector<std::size_t> input_vertex, input_edge, input_face;

@@ -97,8 +97,10 @@ inline std::size_t close_rounded_chain(const Mesh_tables& m, const std::vector<d
   // vertex -> incident arcs (CSR), the border vertices grouped under the border node
   auto node_of = [&](std::size_t v) { return m.vertex_on_border[v] ? border : v; };
   std::vector<std::size_t> begin(m.nv + 2, 0), incident;
+  // (diagonals inside input polygons are left out: G lives on the input's edges)
   for(const Arc& a : m.arcs)
   {
+    if(m.is_virtual(a.edge)) continue;
     ++begin[node_of(m.ev[2 * a.edge]) + 1];
     ++begin[node_of(m.ev[2 * a.edge + 1]) + 1];
   }
@@ -108,6 +110,7 @@ inline std::size_t close_rounded_chain(const Mesh_tables& m, const std::vector<d
     std::vector<std::size_t> fill(begin.begin(), begin.end() - 1);
     for(std::size_t a = 0; a < m.arcs.size(); ++a)
     {
+      if(m.is_virtual(m.arcs[a].edge)) continue;
       incident[fill[node_of(m.ev[2 * m.arcs[a].edge])]++] = a;
       incident[fill[node_of(m.ev[2 * m.arcs[a].edge + 1])]++] = a;
     }

@@ -340,8 +340,9 @@ public:
   void fill_mesh_report(Solve_report& rep) const
   {
     rep.vertices = m_.nv;
-    rep.edges = m_.ne;
-    rep.faces = m_.nf;
+    // the input's edges and faces (polygons), not the diagonals and triangles of their triangulation
+    rep.edges = m_.ne - std::size_t(std::count(m_.edge_virtual.begin(), m_.edge_virtual.end(), char(1)));
+    rep.faces = m_.number_of_polygons();
     rep.components = m_.n_components;
     rep.border_edges = 0;
     for(char b : m_.edge_on_border) rep.border_edges += b ? 1 : 0;

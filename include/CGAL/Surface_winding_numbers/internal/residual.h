@@ -63,7 +63,12 @@ inline Residual_problem residual_problem(const Mesh_tables& m, const std::vector
     p.s[a] = 0.5 * (corner_jump_at(m, v0, a, 0) + corner_jump_at(m, v0, a, 1));
     const double len = m.edge_length(arc.edge) / mean_length;
     const double G = chain[arc.edge];
-    if(std::abs(G) > chain_tolerance)
+    if(m.is_virtual(arc.edge))   // a diagonal inside an input polygon: no jump
+    {
+      p.cost[a] = len;
+      p.lower[a] = p.upper[a] = 0.;
+    }
+    else if(std::abs(G) > chain_tolerance)
     {
       p.cost[a] = epsilon * len;
       p.lower[a] = (std::min)(0., G);

@@ -8,6 +8,7 @@
 #include <CGAL/Surface_winding_numbers/internal/jump_laplace.h>
 #include <CGAL/Surface_winding_numbers/internal/mesh_tables.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <vector>
@@ -64,8 +65,33 @@ inline std::vector<double> shift_tau(const Mesh_tables& m, const std::vector<dou
   return tau;
 }
 
+// One label per input polygon: the rounded area-weighted mean over its triangles of the mean of their
+// defined corner values plus tau (triangles without a defined corner do not count).
+inline void polygon_labels(const Mesh_tables& m, const std::vector<double>& w, const std::vector<double>& tau,
+                           std::vector<int>& W, const std::vector<char>& known)
+{
+  std::size_t np = 0;
+  for(std::size_t q : m.face_polygon) np = (std::max)(np, q + 1);
+  std::vector<double> sum(np, 0.), area(np, 0.);
+  for(std::size_t f = 0; f < m.nf; ++f)
+  {
+    if(!known[f]) continue;
+    double s = 0;
+    int n = 0;
+    for(int k = 0; k < 3; ++k)
+      if(std::isfinite(w[3 * f + k])) { s += w[3 * f + k]; ++n; }
+    const double a = m.face_area(f);
+    sum[m.face_polygon[f]] += a * (s / n + tau[m.face_component[f]]);
+    area[m.face_polygon[f]] += a;
+  }
+  for(std::size_t f = 0; f < m.nf; ++f)
+    if(known[f] && area[m.face_polygon[f]] > 0)
+      W[f] = int(round_half_away(sum[m.face_polygon[f]] / area[m.face_polygon[f]]));
+}
+
 // Integer labels W (paper Sec. 3.5.1): the rounded mean of the defined corner values plus tau. A face
-// whose three corners are all interior endpoints takes the label of a neighbour.
+// whose three corners are all interior endpoints takes the label of a neighbour. The triangles of an
+// input polygon (m.face_polygon) share one label: the rounded area-weighted mean of their means.
 inline std::vector<int> round_labels(const Mesh_tables& m, const std::vector<double>& w, const std::vector<double>& tau)
 {
   std::vector<int> W(m.nf, 0);
@@ -80,6 +106,8 @@ inline std::vector<int> round_labels(const Mesh_tables& m, const std::vector<dou
     if(n > 0) { W[f] = int(round_half_away(sum / n + tau[m.face_component[f]])); known[f] = 1; }
     else ++unknown;
   }
+  if(!m.face_polygon.empty())
+    polygon_labels(m, w, tau, W, known);
   while(unknown > 0)
   {
     std::size_t fixed = 0;
