@@ -89,7 +89,7 @@ Triangle_soup soup_from_arrays(py::handle V, py::handle F)
   else
   {
     // a sequence of polygons: one integer array if all are triangles, else one polygon at a time
-    py::array f;
+    py::object f;
     try
     {
       f = np.attr("asarray")(F);
@@ -98,8 +98,9 @@ Triangle_soup soup_from_arrays(py::handle V, py::handle F)
     {
       // ragged: numpy refuses it
     }
-    if(f && f.ndim() == 2 && f.shape(1) == 3 && is_integer_array(f)) add_triangles(f, soup);
-    else if(f && f.size() == 0) {}   // no face: refused by mesh_from_soup()
+    const py::array a = f ? py::array(f) : py::array();
+    if(f && a.ndim() == 2 && a.shape(1) == 3 && is_integer_array(a)) add_triangles(a, soup);
+    else if(f && a.size() == 0) {}   // no face: refused by mesh_from_soup()
     else
     {
       std::size_t j = 0;

@@ -115,10 +115,13 @@ class Solver:
     """
 
     def __init__(self, V, F):
+        self._setup(V, F)
+
+    def _setup(self, V, F):
         self._solver = _swn.Solver(V, F)
         self.edges = self._solver.edges
         self.edges.flags.writeable = False
-        _warn(self._solver.warnings, 2)
+        _warn(self._solver.warnings, 3)   # at the caller of Solver() or winding_numbers()
 
     @property
     def report(self):
@@ -162,7 +165,8 @@ def winding_numbers(V, F, curves, multiplicities=None, *, epsilon=0.01, reduced_
     ``edges``, and the ``report``. Raises ``ValueError`` on bad input and ``RuntimeError`` when the solver
     fails, with the library's messages.
     """
-    solver = Solver(V, F)
+    solver = Solver.__new__(Solver)
+    solver._setup(V, F)
     # one solve: the Hodge step's per-mesh part is freed before the residual step (lower peak memory)
     return solver._solve(curves, multiplicities, epsilon, reduced_residual, concurrency, verbose, False)
 
