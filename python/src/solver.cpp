@@ -31,44 +31,24 @@ namespace {
 
 typedef py::array_t<std::int64_t, py::array::c_style | py::array::forcecast> Index_array;
 
+// the report as a dict, its fields under their C++ names, the timings (time_X) in a dict `times`
 py::dict report_dict(const SWN::Solve_report& r)
 {
-  py::dict d;
-  d["success"] = r.success;
-  d["error"] = r.error;
-  d["invalid_input"] = r.invalid_input;
-  d["vertices"] = r.vertices;
-  d["edges"] = r.edges;
-  d["faces"] = r.faces;
-  d["components"] = r.components;
-  d["border_edges"] = r.border_edges;
-  d["border_loops"] = r.border_loops;
-  d["genus"] = r.genus;
-  d["curve_edges"] = r.curve_edges;
-  d["interior_endpoints"] = r.interior_endpoints;
-  d["homology_correction"] = r.homology_correction;
-  d["hodge_projection"] = r.hodge_projection;
-  d["reduced_residual"] = r.reduced_residual;
-  d["lp_ran"] = r.lp_ran;
-  d["jump_laplacian_reused"] = r.jump_laplacian_reused;
-  d["lp_variables"] = r.lp_variables;
-  d["lp_rows"] = r.lp_rows;
-  d["lp_objective"] = r.lp_objective;
-  d["degenerate_weights"] = r.degenerate_weights;
-  d["min_label"] = r.min_label;
-  d["max_label"] = r.max_label;
-  d["nonbounding_closing_units"] = r.nonbounding_closing_units;
-  py::dict t;
-  t["setup"] = r.time_setup;
-  t["jump_laplace"] = r.time_jump_laplace;
-  t["hodge"] = r.time_hodge;
-  t["residual"] = r.time_residual;
-  t["second_solve"] = r.time_second_solve;
-  t["labels"] = r.time_labels;
-  t["total"] = r.time_total;
-  t["mesh"] = r.time_mesh;
-  t["output_maps"] = r.time_output_maps;
-  d["times"] = t;
+  py::dict d, times;
+#define SWN_REPORT(F) d[#F] = r.F;
+  SWN_REPORT(success) SWN_REPORT(error) SWN_REPORT(invalid_input)
+  SWN_REPORT(vertices) SWN_REPORT(edges) SWN_REPORT(faces) SWN_REPORT(components)
+  SWN_REPORT(border_edges) SWN_REPORT(border_loops) SWN_REPORT(genus)
+  SWN_REPORT(curve_edges) SWN_REPORT(interior_endpoints)
+  SWN_REPORT(homology_correction) SWN_REPORT(hodge_projection) SWN_REPORT(reduced_residual) SWN_REPORT(lp_ran)
+  SWN_REPORT(jump_laplacian_reused) SWN_REPORT(lp_variables) SWN_REPORT(lp_rows) SWN_REPORT(lp_objective)
+  SWN_REPORT(degenerate_weights) SWN_REPORT(min_label) SWN_REPORT(max_label) SWN_REPORT(nonbounding_closing_units)
+#undef SWN_REPORT
+#define SWN_TIME(F) times[#F] = r.time_##F;
+  SWN_TIME(setup) SWN_TIME(jump_laplace) SWN_TIME(hodge) SWN_TIME(residual) SWN_TIME(second_solve)
+  SWN_TIME(labels) SWN_TIME(total) SWN_TIME(mesh) SWN_TIME(output_maps)
+#undef SWN_TIME
+  d["times"] = times;
   return d;
 }
 
