@@ -1,0 +1,217 @@
+"""Surface winding numbers (Feng, Gillespie and Crane, SIGGRAPH 2023) of curves on triangle meshes.
+
+numpy in, numpy out: ``winding_numbers(V, F, curves)`` solves once, ``Solver(V, F)`` keeps the mesh for
+many curves, ``read_mesh()``, ``read_curve()`` and ``load()`` are the readers of the ``swn`` tool. The
+manual is python/README.md in the source tree.
+
+Conventions
+-----------
+* ``V``: (n, 3) coordinates; ``F``: (m, 3) vertex indices (0-based) of consistently oriented triangles
+  (an oriented 2-manifold, possibly with border), or a sequence of m triangles.
+* Curves run along edges: either an integer array of k halfedges ``(source, target)``, shape (k, 2), or a
+  sequence of vertex polylines (repeat the first vertex at the end to close a loop). ``multiplicities``
+  gives one integer per halfedge, resp. per polyline (default 1); a negative one reverses it.
+* Per-face outputs are in the order of ``F``; per-edge outputs in the order of ``edges``, an (E, 2) array
+  of vertex pairs ``(a, b)``: a value ``c`` on edge ``(a, b)`` means ``c`` traversals from ``a`` to ``b``.
+* Crossing an edge from its right to its left (seen from the side the faces' orientation points to),
+  ``W`` increases by the curve's value there: the inside of a counter-clockwise loop is one higher. In
+  every connected component the label covering the largest area is 0.
+"""
+
+import os
+import warnings
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import _swn
+
+__version__ = _swn.__version__
+__all__ = ["winding_numbers", "Solver", "WindingNumbers", "read_mesh", "read_curve", "load", "CurveOnMesh",
+           "InputError", "MeshWarning"]
+
+#: Bad input in a file read by ``read_mesh()``, ``read_curve()`` or ``load()``: a ``ValueError`` whose
+#: message is the tool's ``FILE:LINE: reason``; attributes ``file``, ``line`` (None when the problem is on
+#: no line) and ``reason``.
+InputError = _swn.InputError
+
+
+class MeshWarning(UserWarning):
+    """Something unusual in a mesh that is kept as it is (unreferenced or duplicated vertices, ...)."""
+
+
+@dataclass(eq=False)
+class WindingNumbers:
+    """The outputs of a solve (numpy arrays) and its report."""
+
+    W: np.ndarray         #: (m,) int32: the winding number label of every face, in the order of F
+    w: np.ndarray         #: (m, 3) float64: w at corner k of face f (vertex F[f, k]); NaN at interior curve endpoints
+    edges: np.ndarray     #: (E, 2) int64: the vertex pairs (a, b) the per-edge values refer to
+    bounding: np.ndarray  #: (E,) int32: the closed completion of the bounding curves (the jumps of W)
+    G: np.ndarray         #: (E,) int32: the nonbounding loops, closed
+    g: np.ndarray         #: (E,) float64: the real-valued nonbounding chain
+    report: dict          #: what the solve did: sizes, topology, residual problem, times in seconds
+
+
+@dataclass(eq=False)
+class CurveOnMesh:
+    """Curves read from files, on the edges of the mesh they live on (``read_curve()``, ``load()``)."""
+
+    V: np.ndarray               #: (n', 3) the mesh's vertices: the input's first, then those of the cut
+    F: np.ndarray               #: (m', 3) its faces: the input's first (each cut face keeps one piece), then the new
+    halfedges: np.ndarray       #: (k, 2) int64: the curves' halfedges (source, target)
+    multiplicities: np.ndarray  #: (k,) int64: how many times the curves run along each of them (positive)
+    info: dict                  #: vertices and faces added by the cut and the refinement, the reader's warnings
+
+
+def _warn(messages, stacklevel):
+    for message in messages:
+        warnings.warn(message, MeshWarning, stacklevel=stacklevel + 1)
+
+
+def _integer_array(a, what):
+    if a.size and a.dtype.kind not in "iu":
+        raise TypeError(f"{what} must hold integers, not {a.dtype}")
+    return a.astype(np.int64, copy=False)
+
+
+def _curve_arrays(curves, multiplicities):
+    """The curves as polylines: all vertices, the offsets of the polylines in them, one multiplicity each."""
+    if isinstance(curves, np.ndarray):
+        if curves.ndim != 2 or curves.shape[1] != 2:
+            raise ValueError("curves given as an array must be halfedges of shape (k, 2), not of shape "
+                             f"{curves.shape}; give vertex polylines as a list of sequences")
+        vertices = _integer_array(curves, "curves").ravel()
+        offsets = np.arange(0, vertices.size + 1, 2, dtype=np.int64)
+    else:
+        polylines = []
+        for i, p in enumerate(curves):
+            p = np.asarray(p)
+            if p.ndim != 1:
+                raise ValueError(f"curves[{i}] must be a sequence of vertex indices (a polyline), not of shape {p.shape}")
+            polylines.append(_integer_array(p, f"curves[{i}]"))
+        vertices = np.concatenate(polylines) if polylines else np.zeros(0, np.int64)
+        offsets = np.zeros(len(polylines) + 1, np.int64)
+        offsets[1:] = np.cumsum([p.size for p in polylines])
+    n = offsets.size - 1
+    if multiplicities is None:
+        return vertices, offsets, np.ones(n, np.int64)
+    m = _integer_array(np.asarray(multiplicities), "multiplicities")
+    if m.ndim == 0:
+        return vertices, offsets, np.full(n, m, np.int64)
+    if m.shape != (n,):
+        raise ValueError(f"multiplicities must have one value per curve ({n}), not shape {m.shape}")
+    return vertices, offsets, m
+
+
+class Solver:
+    """The mesh (V, F) and the package's solver on it, for many curves on one mesh.
+
+    The per-mesh work (tables, cotan weights, the Hodge step's harmonic basis, the factorized Laplacian of
+    closed curves) is done once. Raises ``ValueError`` on an invalid mesh (non-triangle face, index out of
+    range, nonmanifold edge or vertex, inconsistent orientation, non-finite coordinate, zero-area face, no
+    face). The mesh is copied: later changes to V and F do not reach the solver. Solves on one solver run
+    one at a time; the GIL is released while they run.
+    """
+
+    def __init__(self, V, F):
+        self._setup(V, F)
+
+    def _setup(self, V, F):
+        self._solver = _swn.Solver(V, F)
+        self.edges = self._solver.edges
+        self.edges.flags.writeable = False
+        _warn(self._solver.warnings, 3)   # at the caller of Solver() or winding_numbers()
+
+    @property
+    def report(self):
+        """The mesh part of the report (sizes, components, genus, border), from the construction."""
+        return self._solver.report
+
+    @property
+    def number_of_vertices(self):
+        return self._solver.number_of_vertices
+
+    @property
+    def number_of_faces(self):
+        return self._solver.number_of_faces
+
+    def solve(self, curves, multiplicities=None, *, epsilon=0.01, reduced_residual=False, concurrency=True,
+              verbose=False):
+        """Winding numbers of ``curves`` (halfedges (k, 2) or vertex polylines) on this mesh.
+
+        ``epsilon``: relative cost of jumps of the residual function across the curve (paper: 0.01);
+        ``reduced_residual``: the paper's Sec. 6 approximation; ``concurrency=False`` keeps the solve on
+        the calling thread; ``verbose`` prints the steps to stderr. Returns a ``WindingNumbers``. Raises
+        ``ValueError`` on bad curves (a vertex out of range, consecutive vertices not joined by an edge, a
+        curve on a border edge) and ``RuntimeError`` when a step of the solver fails, with the
+        library's message.
+        """
+        return self._solve(curves, multiplicities, epsilon, reduced_residual, concurrency, verbose, True)
+
+    def _solve(self, curves, multiplicities, epsilon, reduced_residual, concurrency, verbose, keep):
+        vertices, offsets, m = _curve_arrays(curves, multiplicities)
+        r = self._solver._solve(vertices, offsets, m, float(epsilon), bool(reduced_residual), bool(concurrency),
+                                keep, bool(verbose))
+        return WindingNumbers(W=r["W"], w=r["w"], edges=self.edges, bounding=r["bounding"], G=r["G"], g=r["g"],
+                              report=r["report"])
+
+
+def winding_numbers(V, F, curves, multiplicities=None, *, epsilon=0.01, reduced_residual=False, concurrency=True,
+                    verbose=False):
+    """Winding numbers of ``curves`` on the triangle mesh (V, F): one solve (see ``Solver.solve()``).
+
+    Returns a ``WindingNumbers``: ``W`` per face, ``w`` per corner, ``bounding``, ``G`` and ``g`` per edge of
+    ``edges``, and the ``report``. Raises ``ValueError`` on bad input and ``RuntimeError`` when the solver
+    fails, with the library's messages.
+    """
+    solver = Solver.__new__(Solver)
+    solver._setup(V, F)
+    # one solve: the Hodge step's per-mesh part is freed before the residual step (lower peak memory)
+    return solver._solve(curves, multiplicities, epsilon, reduced_residual, concurrency, verbose, False)
+
+
+def read_mesh(path):
+    """Reads a triangle mesh file (OFF, OBJ, PLY or STL, by its extension) with the swn tool's reader.
+
+    Returns ``(V, F)``: vertex ``i`` and face ``j`` of the file are ``V[i]`` and ``F[j]``, each face's
+    vertices in the file's order. Unreferenced vertices are kept; they and exactly duplicated positions
+    give a ``MeshWarning``. Raises ``InputError`` (``FILE:LINE: reason``) on a missing file or bad
+    input (unparsable line, index out of range, non-triangle face, non-finite coordinate, a surface
+    that is not an oriented 2-manifold).
+    """
+    V, F, messages = _swn._read_mesh(os.fspath(path))
+    _warn(messages, 2)
+    return V, F
+
+
+def _curve_on_mesh(d):
+    _warn(d["info"]["warnings"], 3)
+    return CurveOnMesh(V=d["V"], F=d["F"], halfedges=d["halfedges"], multiplicities=d["multiplicities"],
+                       info=d["info"])
+
+
+def read_curve(path, V, F, *, refine_short_pieces=True, minimum_piece_edges=8):
+    """Reads a curve file as the swn tool does, on the mesh (V, F) (as returned by ``read_mesh()``).
+
+    Formats: the authors' curve files (``v`` vertex points, ``e`` points on edges in the authors' edge
+    numbering, ``l`` segments, ``#offset``), ``# swn polylines`` (0-based vertex polylines, one per line)
+    and ``# swn halfedges`` (``h SRC DST [M]``). The curves are put on the edges of the mesh with the
+    tool's conforming cut: points on edges become new vertices, and pieces of fewer than
+    ``minimum_piece_edges`` edges that end inside the mesh are refined (``refine_short_pieces``). Returns a
+    ``CurveOnMesh``: the mesh the curves live on (V and F unchanged when there was nothing to cut or
+    refine) and the curves as halfedges with multiplicities, ready for ``winding_numbers()``. Raises
+    ``InputError`` (``FILE:LINE: reason``) on a bad file, ``ValueError`` on a bad mesh.
+    """
+    return _curve_on_mesh(_swn._read_curve(os.fspath(path), V, F, bool(refine_short_pieces), int(minimum_piece_edges)))
+
+
+def load(mesh_path, curve_path=None, *, refine_short_pieces=True, minimum_piece_edges=8):
+    """Reads a mesh and its curves as the swn tool does: the ``l`` lines of an OBJ mesh and/or a curve file.
+
+    Same as ``read_mesh()`` then ``read_curve()``, the OBJ's own polylines (1-based, ``#offset``
+    honoured) included; returns a ``CurveOnMesh``. Raises ``InputError`` when there is no curve at all.
+    """
+    curve_path = None if curve_path is None else os.fspath(curve_path)
+    return _curve_on_mesh(_swn._load(os.fspath(mesh_path), curve_path, bool(refine_short_pieces),
+                                     int(minimum_piece_edges)))
