@@ -380,6 +380,7 @@ private:
       m.points.push_back(CGAL::to_double(z(p)));
     }
     m.nv = i;
+    internal::scale_to_unit(m.points);   // exact; the method is scale invariant
     i = 0;
     for(edge_descriptor e : edges(tm_))
     {

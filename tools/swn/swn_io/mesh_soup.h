@@ -11,6 +11,7 @@
 #include "swn_io/errors.h"
 
 #include <CGAL/Surface_winding_numbers/internal/union_find.h>
+#include <CGAL/Surface_winding_numbers/internal/unit_scale.h>
 
 #include <CGAL/Surface_mesh.h>
 
@@ -71,8 +72,6 @@ struct Mesh_read_info
   std::size_t duplicated_vertex_positions = 0;
   /// STL only: number of corner records merged into an existing vertex (exact equality of coordinates)
   std::size_t merged_stl_vertices = 0;
-  /// faces with exactly zero area (collinear corners); kept
-  std::size_t degenerate_faces = 0;
   /// human-readable warnings (one line each)
   std::vector<std::string> warnings;
   /// OBJ only: the `l` records, in file order
@@ -149,6 +148,27 @@ void soup_from_points_and_polygons(const std::vector<Point>& points, const std::
 }
 
 // ------------------------------------------------------------------------------------------------ checks
+
+// Zero-area faces are refused with their line, by the library's criterion and scaling (the points brought
+// to a unit bounding box: the test depends on the shape of the faces, not on the unit of the file).
+inline void check_face_areas(const Triangle_soup& soup, const std::string& file)
+{
+  static_assert(sizeof(std::array<double, 3>) == 3 * sizeof(double), "points must be contiguous");
+  const double s = CGAL::Surface_winding_numbers::internal::unit_scale(soup.points.empty() ? nullptr : soup.points[0].data(),
+                                                                       soup.points.size());
+  for(std::size_t f = 0; f < soup.triangles.size(); ++f)
+  {
+    const auto& t = soup.triangles[f];
+    double p[3][3];
+    for(int c = 0; c < 3; ++c)
+      for(int k = 0; k < 3; ++k) p[c][k] = s * soup.points[t[c]][k];
+    if(CGAL::Surface_winding_numbers::internal::zero_area_triangle(p[0], p[1], p[2]))
+      throw Input_error(file, f < soup.triangle_lines.size() ? soup.triangle_lines[f] : 0,
+                        "face " + std::to_string(f) + " has zero area (degenerate triangle): its vertices " +
+                            std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " + std::to_string(t[2]) +
+                            " are collinear or coincide");
+  }
+}
 
 inline std::string edge_name(std::size_t a, std::size_t b)
 {
@@ -284,17 +304,7 @@ inline void check_triangle_soup(const Triangle_soup& soup, const std::string& fi
     info.warnings.push_back(std::to_string(dup) + " vertices have exactly the same position as another vertex (e.g. " +
                             std::to_string(std::min(dup_a, dup_b)) + " and " + std::to_string(std::max(dup_a, dup_b)) +
                             "); kept as distinct vertices");
-  std::size_t degenerate = 0;
-  for(const auto& t : soup.triangles)
-  {
-    const auto &p = soup.points[t[0]], &q = soup.points[t[1]], &r = soup.points[t[2]];
-    double u[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]}, w[3] = {r[0] - p[0], r[1] - p[1], r[2] - p[2]};
-    double c0 = u[1] * w[2] - u[2] * w[1], c1 = u[2] * w[0] - u[0] * w[2], c2 = u[0] * w[1] - u[1] * w[0];
-    if(c0 == 0 && c1 == 0 && c2 == 0) ++degenerate;
-  }
-  info.degenerate_faces = degenerate;
-  if(degenerate > 0)
-    info.warnings.push_back(std::to_string(degenerate) + " faces have zero area (collinear corners); kept");
+  check_face_areas(soup, file);
 }
 
 

@@ -36,7 +36,8 @@ namespace IO {
 
   Validation: the readers report, and never repair. They throw `Input_error` (with file name and 1-based line
   number where a line exists) on: a missing or unreadable file, an unparsable line, an index out of range, a
-  face that is not a triangle, a NaN or infinite coordinate, a face with a repeated vertex, a mesh without
+  face that is not a triangle, a NaN or infinite coordinate, a face with a repeated vertex, a face of zero
+  area (collinear or coincident corners, tested in a unit bounding box: independent of the unit), a mesh without
   faces, and a surface that is not an oriented 2-manifold (an edge shared by more than two faces, two faces
   traversing an edge in the same direction, or a vertex where several fans of faces meet). Unreferenced
   vertices are kept as isolated vertices and reported in `Mesh_read_info`, as are exactly duplicated vertex

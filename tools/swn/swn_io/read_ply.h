@@ -12,6 +12,7 @@
 #include <CGAL/IO/PLY.h>
 #include <CGAL/Simple_cartesian.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -141,6 +142,42 @@ struct Ply_header
   int indices = -1;                 // the list property of the face element
 };
 
+inline std::size_t ply_type_size(Ply_type t)
+{
+  switch(t)
+  {
+    case Ply_type::INT8: case Ply_type::UINT8: return 1;
+    case Ply_type::INT16: case Ply_type::UINT16: return 2;
+    case Ply_type::FLOAT64: return 8;
+    default: return 4;
+  }
+}
+
+// The counts of the header must fit in the data: a record takes at least one byte per property in ASCII
+// (a token), and its scalars and list counts in binary. Checked before reading, so that a few bytes
+// announcing billions of records fail at once, on the element's line; an element with records but no
+// property (nothing to read, so nothing bounds its count) is refused.
+inline void check_ply_element_sizes(const Ply_header& header, std::size_t data_bytes, const std::string& file)
+{
+  std::size_t needed = 0;
+  for(const Ply_element& el : header.elements)
+  {
+    if(el.count == 0) continue;
+    if(el.props.empty())
+      throw Input_error(file, el.line, "element " + quote(el.name) + " declares " + std::to_string(el.count) +
+                                           " records but no property");
+    std::size_t record = 0;
+    for(const Ply_property& p : el.props)
+      record += header.format == 0 ? 1 : ply_type_size(p.is_list ? p.count_type : p.type);
+    const std::size_t left = data_bytes - std::min(needed, data_bytes);
+    if(static_cast<unsigned long long>(el.count) > left / record)
+      throw Input_error(file, el.line, "element " + quote(el.name) + " declares " + std::to_string(el.count) +
+                                           " records, more than the " + std::to_string(data_bytes) +
+                                           " bytes of data can hold");
+    needed += static_cast<std::size_t>(el.count) * record;
+  }
+}
+
 inline Ply_header read_ply_header(const std::string& data, const std::string& file)
 {
   Ply_header header;
@@ -256,6 +293,7 @@ inline Ply_header read_ply_header(const std::string& data, const std::string& fi
   }
   if(header.vertex < 0)
     throw Input_error(file, 0, "PLY file without a 'vertex' element");
+  check_ply_element_sizes(header, data.size() - header.body, file);
   return header;
 }
 
