@@ -3,6 +3,7 @@
 // meshes in extreme units. Each case fails fast with one `FILE:LINE: reason`, or is read as its unit-size
 // copy would be.
 
+#include "swn_io/atomic_output_dir.h"
 #include "swn_io/errors.h"
 #include "swn_io/read_curves.h"
 #include "swn_io/read_mesh.h"
@@ -11,8 +12,10 @@
 
 #include <gtest/gtest.h>
 
+#include <signal.h>
 #include <sys/stat.h>
 #include <sys/types.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstdint>
@@ -163,5 +166,50 @@ TEST(HostileInput, ZeroAreaFacesAndExtremeUnits)
     };
     EXPECT_EQ(read_text(sliver(1e-6), "obj").number_of_faces(), 1u) << scale;
     expect_input_error([&] { read_text(sliver(1e-20), "obj"); }, 4, {"face 0 has zero area"});
+  }
+}
+
+// 5. A signal ends the process without the destructor of Atomic_output_dir: the handler installed by
+// remove_temporaries_on_signals() removes the temporaries and the directories created, and the process
+// still ends by the signal. A child process writes two temporaries in a new directory two levels deep,
+// tells the parent through a pipe and waits; the parent signals it.
+TEST(HostileInput, SignalsLeaveNoTemporaries)
+{
+  for(int sig : {SIGTERM, SIGINT, SIGHUP})
+  {
+    TempDir d;
+    const std::string target = d / "new/out";
+    int ready[2];
+    ASSERT_EQ(::pipe(ready), 0);
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if(child == 0)
+    {
+      ::close(ready[0]);
+      try
+      {
+        IO::Atomic_output_dir::remove_temporaries_on_signals();
+        IO::Atomic_output_dir out(target);
+        out.write("a.txt", [](std::ostream& os) { os << "a\n"; });
+        out.write("b.txt", [](std::ostream& os) { os << std::string(1 << 16, 'b'); });
+        if(::write(ready[1], "r", 1) != 1) ::_exit(3);
+        for(;;) ::pause();
+      }
+      catch(...) {}
+      ::_exit(4);
+    }
+    ::close(ready[1]);
+    char c = 0;
+    ASSERT_EQ(::read(ready[0], &c, 1), 1) << "the child failed before writing";
+    ::close(ready[0]);
+    std::size_t temporaries = 0;
+    for(const auto& e : fs::directory_iterator(target)) temporaries += e.path().filename().string().find(".swn-tmp-") != std::string::npos;
+    EXPECT_EQ(temporaries, 2u);   // the state the signal interrupts
+    ASSERT_EQ(::kill(child, sig), 0);
+    int status = 0;
+    ASSERT_EQ(::waitpid(child, &status, 0), child);
+    EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == sig) << "status " << status;
+    EXPECT_FALSE(fs::exists(d / "new")) << "left behind after signal " << sig;
+    EXPECT_TRUE(fs::is_empty(d.path()));
   }
 }

@@ -308,6 +308,7 @@ int main(int argc, char** argv)
     const auto t0 = std::chrono::steady_clock::now();
     try
     {
+      SIO::Atomic_output_dir::remove_temporaries_on_signals();   // SIGINT, SIGTERM, SIGHUP leave nothing behind
       SIO::Atomic_output_dir out(opt.output_dir);
       auto completed = mesh.add_property_map<Mesh::Edge_index, int>("e:completed", 0).first;
       for(auto e : edges(mesh)) completed[e] = B[e] + G[e];
