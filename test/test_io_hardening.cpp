@@ -19,6 +19,7 @@
 #include <unistd.h>
 
 #include <cstdint>
+#include <cstdio>
 #include <functional>
 #include <limits>
 #include <sstream>
@@ -181,6 +182,7 @@ TEST(HostileInput, SignalsLeaveNoTemporaries)
     const std::string target = d / "new/out";
     int ready[2];
     ASSERT_EQ(::pipe(ready), 0);
+    std::fflush(nullptr);   // nothing buffered is written twice
     const pid_t child = ::fork();
     ASSERT_GE(child, 0);
     if(child == 0)
