@@ -357,7 +357,52 @@ inline void read_ply_ascii_body(const std::string& data, const Ply_header& heade
   body.check_end();
 }
 
-// Binary data has no lines to report: CGAL's reader serves (the header was checked above, with its lines).
+// Walks the binary data record by record before CGAL's reader sees it: every list length must fit in
+// the bytes left (a length of 4e9 would otherwise be read as a vector of 4e9 values), faces must be
+// triangles, and the records must end where the data ends.
+inline void check_ply_binary_layout(const std::string& data, const Ply_header& header, const std::string& file)
+{
+  const bool big_endian = header.format == 2;
+  std::size_t pos = header.body;
+  auto read_count = [&](Ply_type t) -> long long {
+    const std::size_t n = ply_type_size(t);
+    unsigned long long u = 0;
+    for(std::size_t k = 0; k < n; ++k)
+      u |= static_cast<unsigned long long>(static_cast<unsigned char>(data[pos + k])) << (8 * (big_endian ? n - 1 - k : k));
+    pos += n;
+    const bool is_signed = t == Ply_type::INT8 || t == Ply_type::INT16 || t == Ply_type::INT32;
+    if(is_signed && (u >> (8 * n - 1)) != 0) return -1;   // negative
+    return static_cast<long long>(u);
+  };
+  for(std::size_t i = 0; i < header.elements.size(); ++i)
+  {
+    const Ply_element& el = header.elements[i];
+    for(long long r = 0; r < el.count; ++r)
+      for(std::size_t k = 0; k < el.props.size(); ++k)
+      {
+        const Ply_property& pr = el.props[k];
+        const std::size_t head = ply_type_size(pr.is_list ? pr.count_type : pr.type);
+        if(data.size() - pos < head)
+          throw Input_error(file, 0, "unexpected end of binary PLY data in record " + std::to_string(r) + " of element " +
+                                         quote(el.name));
+        if(!pr.is_list) { pos += head; continue; }
+        const long long n = read_count(pr.count_type);
+        if(int(i) == header.face && int(k) == header.indices && n != 3)
+          throw Input_error(file, 0, n < 0 ? "negative list length in face " + std::to_string(r)
+                                           : face_arity_message(static_cast<std::size_t>(r), static_cast<std::size_t>(n)));
+        if(n < 0 || static_cast<unsigned long long>(n) > (data.size() - pos) / ply_type_size(pr.type))
+          throw Input_error(file, 0, "list " + quote(pr.name) + " of record " + std::to_string(r) + " of element " +
+                                         quote(el.name) + " announces " + std::to_string(n) +
+                                         " values, more than the binary PLY data holds");
+        pos += static_cast<std::size_t>(n) * ply_type_size(pr.type);
+      }
+  }
+  if(pos != data.size())
+    throw Input_error(file, 0, "trailing junk after the binary PLY data (" + std::to_string(data.size() - pos) + " bytes)");
+}
+
+// Binary data has no lines to report: CGAL's reader serves (the header was checked above, with its lines,
+// and the layout of the data by check_ply_binary_layout()).
 inline void read_ply_binary_body(const std::string& data, const std::string& file, Triangle_soup& soup)
 {
   std::istringstream in(data, std::ios::in | std::ios::binary);
@@ -380,7 +425,11 @@ inline void read_PLY_soup(std::istream& is, const std::string& file, Triangle_so
     throw Input_error(file, 0, "read error");
   const Ply_header header = read_ply_header(data, file);
   if(header.format == 0) read_ply_ascii_body(data, header, file, soup);
-  else read_ply_binary_body(data, file, soup);
+  else
+  {
+    check_ply_binary_layout(data, header, file);
+    read_ply_binary_body(data, file, soup);
+  }
 }
 
 } // namespace internal
