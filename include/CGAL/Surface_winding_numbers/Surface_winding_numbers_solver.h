@@ -386,7 +386,6 @@ private:
       m.points.push_back(CGAL::to_double(z(p)));
     }
     m.nv = i;
-    internal::scale_to_unit(m.points);   // exact; the method is scale invariant
     i = 0;
     for(edge_descriptor e : edges(tm_))
     {
@@ -398,7 +397,8 @@ private:
     m.ne = i;
     bool triangles = true;
     for(face_descriptor f : faces(tm_)) triangles = triangles && degree(f, tm_) == 3;
-    if(!triangles) return polygon_mesh_tables(std::move(m.points));
+    if(!triangles) return polygon_mesh_tables(std::move(m.points));   // scaled there
+    m.point_scale = internal::scale_to_unit(m.points);   // exact; the method is scale invariant
     i = 0;
     for(face_descriptor f : faces(tm_))
     {

@@ -38,12 +38,14 @@ inline double unit_scale(const double* xyz, std::size_t n)
   return std::ldexp(1., -e);
 }
 
-// Brings the points to a unit bounding box (unit_scale()); a no-op on meshes of extent in [1, 2).
-inline void scale_to_unit(std::vector<double>& xyz)
+// Brings the points to a unit bounding box (unit_scale()) and returns the factor; a no-op on meshes of
+// extent in [1, 2).
+inline double scale_to_unit(std::vector<double>& xyz)
 {
   const double s = unit_scale(xyz.data(), xyz.size() / 3);
   if(s != 1.)
     for(double& x : xyz) x *= s;
+  return s;
 }
 
 // The zero-area test of faces, shared by the library and the tool's readers: twice the area of the
