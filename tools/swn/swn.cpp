@@ -3,9 +3,11 @@
 //   swn MESH [--curve FILE] [--output-dir DIR] [--epsilon X] [--lp-solver NAME]
 //            [--linear-solver NAME] [--quiet] [--verbose]
 //
-// Reads a triangle mesh (OFF, OBJ, PLY, STL; order kept) and curves (inline OBJ `l` lines and/or a
-// curve file), cuts the mesh so that the curves lie on edges, solves, and writes every output of
-// the method to DIR atomically. Exit codes: 0 success, 1 solver or output failure, 2 bad input.
+// Reads a mesh (OFF, OBJ, PLY, STL; order kept) and curves (inline OBJ `l`/`c` lines and/or a curve
+// file). An oriented 2-manifold triangle mesh is cut so that the curves lie on edges and solved as a
+// Surface_mesh; any other file (polygons, nonmanifold, nonorientable) and dual chains are solved as a
+// polygon soup (swn_soup_route.h). Every output of the method is written to DIR atomically.
+// Exit codes: 0 success, 1 solver or output failure, 2 bad input.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -45,11 +47,15 @@ namespace SIO = CGAL::Surface_winding_numbers::IO;
 static const char* usage =
   "usage: swn MESH [options]\n"
   "\n"
-  "Computes surface winding numbers (Feng, Gillespie, Crane 2023) of curves on a triangle mesh.\n"
+  "Computes surface winding numbers (Feng, Gillespie, Crane 2023) of curves on a surface mesh.\n"
   "\n"
-  "  MESH                   triangle mesh: .off .obj .ply .stl (vertex and face order are kept);\n"
-  "                         `l` polylines in an OBJ file are read as curves (1-based, #offset honoured)\n"
-  "  --curve FILE           curve file: the authors' format (v / e / l / #offset lines), or a file whose\n"
+  "  MESH                   mesh: .off .obj .ply .stl (vertex and face order are kept); `l` polylines and\n"
+  "                         `c` dual chains in an OBJ file are read as curves (1-based, #offset honoured).\n"
+  "                         A file that is not an oriented 2-manifold triangle mesh (polygons, nonmanifold\n"
+  "                         edges or vertices, nonorientable gluings) or curves with dual chains are solved\n"
+  "                         as a polygon soup: outputs on the file's faces, curve edges at nonmanifold\n"
+  "                         vertices left out (warning), curves given by vertices or dual chains only\n"
+  "  --curve FILE           curve file: the authors' format (v / e / l / c / #offset lines), or a file whose\n"
   "                         first line is `# swn polylines` (0-based vertex polylines, one per line) or\n"
   "                         `# swn halfedges` (lines `h SRC DST [multiplicity]`)\n"
   "  --output-dir DIR       write labels.txt, mesh.ply, w.obj, bounding.obj, nonbounding.obj,\n"
