@@ -84,7 +84,7 @@ inline Suite make_suite(const std::string& name)
     s.gaps = {0.0, 0.05, 0.15, 0.30};
     if(name == "paper")
     {
-      s.gaps = {0.05, 0.10};
+      s.gaps = {0.05, 0.08, 0.10};
       s.regions = "eigen";
       s.loops_off_region_curves = true;
     }
