@@ -6,7 +6,8 @@
   bench.py --merge --out DIR SHARD_DIR...     merge shard results into DIR
   bench.py --summarize --out DIR              recompute summary.json and plots from DIR/cases.csv
 
-Writes DIR/cases.csv (one row per case), DIR/summary.json and DIR/*.png (gnuplot, when installed).
+Writes DIR/cases.csv (one row per case), DIR/summary.json and DIR/*.png (gnuplot and matplotlib, when
+installed).
 """
 import argparse
 import csv
@@ -290,7 +291,16 @@ def summarize(rows, out, extra):
     return summary
 
 
+def matplotlib_plots(out):
+    """error_factors.png and confidence.png (plots.py), when python3-matplotlib is installed."""
+    script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "plots.py")
+    r = subprocess.run([sys.executable, script, out], capture_output=True, text=True)
+    if r.returncode != 0:
+        print("[bench] plots.py failed (apt-get install python3-matplotlib): " + r.stderr.strip()[-300:], file=sys.stderr)
+
+
 def plots(rows, out):
+    matplotlib_plots(out)
     gp = shutil.which("gnuplot")
     if not gp:
         print("[bench] gnuplot not found: no plots (apt-get install gnuplot-nox)", file=sys.stderr)
