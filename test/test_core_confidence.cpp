@@ -3,6 +3,8 @@
 // direction that keeps G within the input's bounds.
 #include "test_core_support.h"
 
+#include <CGAL/Polygon_mesh_processing/measure.h>
+
 #include "../benchmark/bench_confidence.h"
 
 namespace {
@@ -91,8 +93,8 @@ TEST(Confidence, RegionInsideACompleteLoopOnATorusCostsEpsilonTimesItsLength)
   std::size_t f_out = 0;
   while(cells.of_face[f_out] == inside) ++f_out;
   EXPECT_EQ(c.W[f_in] + flips[inside].delta, c.W[f_out]);
-  // the boundary of the rectangle: 16 edges of the (nu x nv) grid
-  EXPECT_GT(flips[inside].boundary, 15.);
+  // the boundary: the rectangle's length in mean interior edge lengths
+  EXPECT_NEAR(flips[inside].boundary, expected / 0.01, 1e-9 * expected / 0.01);
 }
 
 TEST(Confidence, BandBetweenTwoOppositeMeridiansFlipsIntoTwoNonboundingLoops)
