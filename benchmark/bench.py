@@ -401,6 +401,8 @@ def main():
     ap.add_argument("--straighten", default="on", help="straighten the planted loops: on | off")
     ap.add_argument("--gap-levels", default="", help="comma-separated gap levels instead of the suite's (calibration)")
     ap.add_argument("--only", default="", help="simply-connected | handles: the meshes of one class only")
+    ap.add_argument("--regions", default="", help="field | eigen: the region draws instead of the suite's")
+    ap.add_argument("--loops-off-regions", default="", help="on | off: route the planted loops off the region curves or not")
     ap.add_argument("--merge", action="store_true")
     ap.add_argument("--summarize", action="store_true")
     ap.add_argument("dirs", nargs="*")
@@ -443,6 +445,10 @@ def main():
         gen += ["--gap-levels", args.gap_levels]
     if args.only:
         gen += ["--only", args.only]
+    if args.regions:
+        gen += ["--regions", args.regions]
+    if args.loops_off_regions:
+        gen += ["--loops-off-regions", args.loops_off_regions]
     print("[bench] generating cases: " + " ".join(gen), file=sys.stderr)
     run(gen)
     t_gen = time.time() - t0
@@ -464,7 +470,8 @@ def main():
         rows = list(ex.map(one, enumerate(cases)))
     write_csv(os.path.join(out, "cases.csv"), rows)
     extra = {"suite": args.suite, "shard": args.shard, "jobs": args.jobs, "timeout_seconds": args.timeout,
-             "lp_option": args.lp, "epsilon": args.epsilon, "gap_mode": args.gaps, "gap_levels_option": args.gap_levels, "only": args.only, "straighten": args.straighten, "command": args.command or " ".join(sys.argv), "git_commit": git_commit(root),
+             "lp_option": args.lp, "epsilon": args.epsilon, "gap_mode": args.gaps, "gap_levels_option": args.gap_levels, "only": args.only,
+             "regions_option": args.regions, "loops_off_regions_option": args.loops_off_regions, "straighten": args.straighten, "command": args.command or " ".join(sys.argv), "git_commit": git_commit(root),
              "generation_seconds": t_gen, "wall_time_seconds": time.time() - t0}
     s = summarize(rows, out, extra)
     plots(rows, out)

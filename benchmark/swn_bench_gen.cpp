@@ -45,6 +45,8 @@ struct Options
   int shard = 0, nshards = 1;
   std::vector<double> gap_levels;   // overrides the suite's gap levels (calibration)
   std::string only_class;           // "", "simply-connected" or "handles": the meshes of one class only
+  std::string regions;              // "", "field" or "eigen": overrides the suite's region draws
+  std::string loops_off_regions;    // "", "on" or "off": overrides the suite's routing of the planted loops
 };
 
 // The mesh of `spec`, from the cache or built by a fresh process of this program (with address-space
@@ -133,6 +135,8 @@ void generate(const Options& o)
 {
   Suite suite = make_suite(o.suite);
   if(!o.gap_levels.empty()) suite.gaps = o.gap_levels;
+  if(!o.regions.empty()) suite.regions = o.regions;
+  if(!o.loops_off_regions.empty()) suite.loops_off_region_curves = o.loops_off_regions == "on";
   fs::create_directories(o.out);
   const std::string mesh_cache = o.mesh_cache.empty() ? o.out + "/meshes" : o.mesh_cache;
   fs::create_directories(mesh_cache);
@@ -237,6 +241,16 @@ int main(int argc, char** argv)
       {
         o.only_class = next();
         if(o.only_class != "simply-connected" && o.only_class != "handles") throw std::runtime_error("--only simply-connected|handles");
+      }
+      else if(a == "--regions")
+      {
+        o.regions = next();
+        if(o.regions != "field" && o.regions != "eigen") throw std::runtime_error("--regions field|eigen");
+      }
+      else if(a == "--loops-off-regions")
+      {
+        o.loops_off_regions = next();
+        if(o.loops_off_regions != "on" && o.loops_off_regions != "off") throw std::runtime_error("--loops-off-regions on|off");
       }
       else if(a == "--info") info_mode = true;
       else if(a == "--build-mesh") build_mesh_name = next();
