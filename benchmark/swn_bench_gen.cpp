@@ -1,6 +1,6 @@
 // swn_bench_gen: builds the meshes and the cases of the Surface Winding Numbers benchmark.
 //
-//   swn_bench_gen --suite quick|full|large --out CASES_DIR [--mesh-cache DIR] [--cgal-data DIR] [--shard I/N]
+//   swn_bench_gen --suite quick|full|paper|ablation|large --out CASES_DIR [--mesh-cache DIR] [--cgal-data DIR] [--shard I/N]
 //                 [--gaps per-curve|global] [--straighten on|off]
 //   swn_bench_gen --info MESH...        genus, borders, components and size of mesh files
 //
@@ -8,17 +8,20 @@
 // `# swn halfedges` format, the ground-truth labels (one integer per face, in the mesh's face order),
 // the planted nonbounding chain (same format) and meta.json. Everything derives from fixed seeds.
 //
-// Ground truth: the faces are labelled by thresholding a smooth random field (a sum of a few random
-// Gaussians in 3D, widths 10-30 % of the bounding-box diagonal) at the face centroid, at one or two
-// levels; the region curve is the jump of these labels, J(gt): on an interior edge e with
+// Ground truth: the faces are labelled by thresholding a smooth function at one or two levels: a random
+// field in 3D (suites quick, full, ablation, large) or a low-frequency Laplacian eigenfunction (suite
+// paper); the region curve is the jump of these labels, J(gt): on an interior edge e with
 // h = halfedge(e), chain(e) = gt(face(h)) - gt(face(opposite(h))) (the library's convention: crossing
 // from right to left, W rises by the chain value). On surfaces that are not disks or spheres, a random
 // nonempty subset of a homology basis of H1(M, border) is added with random signs: the greedy basis of
 // Erickson and Whittlesey (shortest-path tree from a random root, maximum spanning cotree on the dual,
-// border loops capped by virtual cones) for the handles, and shortest arcs between border loops.
-// Corruption: random runs along the curve (each 1-4 % of the total curve length) are deleted until
-// 0, 5, 15 or 30 % of the curve length is gone; the levels are nested (the same deletion order).
-
+// border loops capped by virtual cones) for the handles, and shortest arcs between border loops, the
+// loops straightened (suite paper: also routed off the region curve). Corruption: random runs along
+// every connected curve are deleted until the gap level of its length is gone (--gaps global: runs
+// anywhere); the levels are nested (the same deletion order).
+//
+// Options for ablations and calibration: --gap-levels L1,L2,... (instead of the suite's), --only
+// simply-connected|handles, --regions field|eigen, --loops-off-regions on|off.
 
 #include "gen_loops.h"
 #include "gen_meshes.h"
