@@ -2,6 +2,8 @@
 // corpus (exit code 2, file and line in the message, no output left behind), inputs never modified.
 #include "test_tool_support.h"
 
+#include <algorithm>
+
 TEST(Tool, HelpAndUsageErrors)
 {
   Tool_run r = run("--help");
@@ -75,6 +77,10 @@ TEST(Tool, MalformedCorpusGivesFileLineAndExitCode2)
     std::string file;
     std::size_t expected_line = 0;
     ls >> file >> expected_line;
+    std::string rest;
+    std::getline(ls, rest);
+    const std::size_t marker = rest.find("  # soup");
+    const std::string message = rest.substr(rest.find_first_not_of(' '), marker == std::string::npos ? std::string::npos : marker - rest.find_first_not_of(' '));
     const std::string path = corpus + file;
     const bool curve_file = file.size() > 4 && file.substr(file.size() - 4) == ".txt";
     const std::string before = slurp(path);
@@ -82,6 +88,14 @@ TEST(Tool, MalformedCorpusGivesFileLineAndExitCode2)
     const Tool_run r = curve_file ? run("'" + std::string(SWN_TEST_DATA_DIR) + "/grid4.off' --curve '" + path +
                                    "' --output-dir '" + out.string() + "'")
                              : run("'" + path + "' --output-dir '" + out.string() + "'");
+    if(marker != std::string::npos)
+    {
+      // not a triangle mesh the library's FaceGraph route takes, but a soup the tool solves: whatever else
+      // it says (these files have no curve), it does not reject them for that
+      EXPECT_EQ(r.err.find(message), std::string::npos) << file << ": " << r.err;
+      fs::remove_all(out);
+      continue;
+    }
     EXPECT_EQ(r.status, 2) << file << ": " << r.err;
     const std::string where = expected_line > 0 ? file + ":" + std::to_string(expected_line) + ":" : file;
     EXPECT_NE(r.err.find(where), std::string::npos) << "expected '" << where << "' in: " << r.err;

@@ -1,6 +1,4 @@
-// Shared by the end-to-end tests of the swn tool (test_tool*.cpp): running the tool, output directories,
-// labels files.
-
+// Helpers of the swn tool's end-to-end tests (test_tool*.cpp): running the tool, reading its outputs.
 #ifndef SWN_TEST_TOOL_SUPPORT_H
 #define SWN_TEST_TOOL_SUPPORT_H
 
@@ -13,16 +11,17 @@
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+#include <unistd.h>
 #include <vector>
 
 namespace fs = std::filesystem;
 
-namespace swn_tool_test {
+namespace tool_test {
 
-inline const std::string tool = SWN_TOOL_PATH;
-inline const std::string tuned = SWN_TUNED_PATH;
-inline const std::string demo = std::string(SWN_REPO_DATA_DIR) + "/swn-demo/";
-inline const std::string corpus = std::string(SWN_TEST_DATA_DIR) + "/malformed/";
+const std::string tool = SWN_TOOL_PATH;
+const std::string tuned = SWN_TUNED_PATH;
+const std::string demo = std::string(SWN_REPO_DATA_DIR) + "/swn-demo/";
+const std::string corpus = std::string(SWN_TEST_DATA_DIR) + "/malformed/";
 
 struct Tool_run
 {
@@ -42,7 +41,7 @@ inline std::string slurp(const std::string& path)
 // command line
 inline Tool_run run(const std::string& args, const std::string& env = std::string(), const std::string& program = tool)
 {
-  static int counter = 0;   // one per process: inline, shared by the test files
+  static int counter = 0;
   const fs::path tmp = fs::temp_directory_path() / ("swn_tool_test_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
   const std::string cmd = env + " '" + program + "' " + args + " >'" + tmp.string() + ".out' 2>'" + tmp.string() + ".err'";
   const int raw = std::system(cmd.c_str());
@@ -110,8 +109,8 @@ inline int chain_edges_in_obj(const std::string& text)
   return segments;
 }
 
-} // namespace swn_tool_test
+} // namespace tool_test
 
-using namespace swn_tool_test;
+using namespace tool_test;
 
-#endif // SWN_TEST_TOOL_SUPPORT_H
+#endif
