@@ -352,9 +352,10 @@ inline Curve_set read_polyline_curves(std::istream& is, const std::string& file,
   });
 }
 
-// is_edge(s, t): are the vertices s != t joined by an edge
+// is_edge(s, t): are the vertices s != t joined by an edge; `edges`: how many edges the surface has (for
+// max_curve_segments())
 template <class IsEdge>
-Curve_set read_halfedge_curves(std::istream& is, const std::string& file, std::size_t nv, IsEdge is_edge)
+Curve_set read_halfedge_curves(std::istream& is, const std::string& file, std::size_t nv, std::size_t edges, IsEdge is_edge)
 {
   return read_vertex_records(is, file, nv,
                              [&](const std::vector<std::string_view>& tok, const Line_reader& lr, Curve_set& cs, auto& vertex) {
@@ -371,8 +372,8 @@ Curve_set read_halfedge_curves(std::istream& is, const std::string& file, std::s
     const std::size_t s = cs.points[a].element, t = cs.points[b].element;
     if(s == t || !is_edge(s, t))
       lr.fail("halfedge " + std::to_string(s) + " -> " + std::to_string(t) + " is not an edge of the mesh");
-    if(cs.segments.size() + static_cast<std::size_t>(m) > max_curve_segments(mesh.number_of_edges()))
-      lr.fail(too_many_segments(mesh.number_of_edges()));
+    if(cs.segments.size() + static_cast<std::size_t>(m) > max_curve_segments(edges))
+      lr.fail(too_many_segments(edges));
     for(long long k = 0; k < m; ++k)
       cs.segments.push_back(Curve_segment{a, b, lr.line_number()});
   });
@@ -437,7 +438,7 @@ Curve_set read_curves(std::istream& is, const std::string& file, const CGAL::Sur
   Curve_set cs;
   if(format == Curve_file_format::POLYLINES) cs = internal::read_polyline_curves(is, file, nv);
   else if(format == Curve_file_format::HALFEDGES)
-    cs = internal::read_halfedge_curves(is, file, nv, [&](std::size_t s, std::size_t t) {
+    cs = internal::read_halfedge_curves(is, file, nv, mesh.number_of_edges(), [&](std::size_t s, std::size_t t) {
       return CGAL::halfedge(typename Mesh::Vertex_index(static_cast<typename Mesh::size_type>(s)),
                             typename Mesh::Vertex_index(static_cast<typename Mesh::size_type>(t)), mesh).second;
     });

@@ -274,6 +274,10 @@ inline Ply_header read_ply_header(const std::string& data, const std::string& fi
       }
       if(header.x < 0 || header.y < 0 || header.z < 0)
         throw Input_error(file, el.line, "the 'vertex' element lacks an x, y or z property");
+      // CGAL's binary reader reads coordinates as float or double only (any other type: a null dereference)
+      for(int k : {header.x, header.y, header.z})
+        if(header.format != 0 && el.props[k].type != Ply_type::FLOAT32 && el.props[k].type != Ply_type::FLOAT64)
+          throw Input_error(file, el.line, "binary PLY: vertex coordinates x, y, z must be 'float' or 'double'");
     }
     else if(el.name == "face")
     {
