@@ -157,6 +157,8 @@ std::vector<char> faces_in_rect(const SI::Mesh_tables& t, double x0, double y0, 
   {
     double x = 0, y = 0;
     for(int k = 0; k < 3; ++k) { x += t.point(t.fv[3 * f + k])[0] / 3; y += t.point(t.fv[3 * f + k])[1] / 3; }
+    x /= t.point_scale;   // back to the mesh's unit (the tables' points are scaled to a unit box)
+    y /= t.point_scale;
     in[f] = x > x0 && x < x1 && y > y0 && y < y1;
   }
   return in;

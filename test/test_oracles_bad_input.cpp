@@ -108,6 +108,115 @@ TYPED_TEST(OraclesBadInput, SolverClassReportsError)
 }
 
 // ==========================================================================================
+// API misuse (issue 33): what can be checked cheaply is, instead of a crash or a silent read out of
+// bounds; extreme units solve like unit-size meshes.
+// ==========================================================================================
+
+TEST(OraclesApiMisuse, ChainHelpersRefuseDescriptorsOfNoMesh)
+{
+  auto m = make_mesh<SM>(make_torus(kNu, kNv, seed(120)));
+  SM& tm = m->tm;
+  auto ch = tm.add_property_map<SM::Edge_index, int>("e:test_chain", 0).first;
+  const SM::Halfedge_index good = *halfedges(tm).begin();
+  const SM::Halfedge_index far(static_cast<SM::size_type>(tm.num_halfedges() + 7));
+  for(const std::vector<SM::Halfedge_index>& hs : {std::vector<SM::Halfedge_index>{good, far},
+                                                     std::vector<SM::Halfedge_index>{good, SM::null_halfedge()}})
+  {
+    EXPECT_FALSE(SWN::add_halfedges_to_chain(tm, hs, ch));
+    for(auto e : edges(tm)) ASSERT_EQ(ch[e], 0);   // unchanged
+  }
+  const std::vector<SM::Vertex_index> polyline = {m->vertex[torus_vid(kNu, kNv, 0, 0)], m->vertex[torus_vid(kNu, kNv, 1, 0)],
+                                                  SM::Vertex_index(static_cast<SM::size_type>(tm.num_vertices() + 3))};
+  EXPECT_FALSE(SWN::add_vertex_polyline_to_chain(tm, polyline, ch));
+  EXPECT_FALSE(SWN::add_vertex_polyline_to_chain(tm, std::vector<SM::Vertex_index>{SM::null_vertex(), polyline[0]}, ch));
+  for(auto e : edges(tm)) ASSERT_EQ(ch[e], 0);
+  // a chain map of a smaller mesh
+  SM small;
+  CGAL::make_tetrahedron(Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(0, 1, 0), Point_3(0, 0, 1), small);
+  auto small_chain = small.add_property_map<SM::Edge_index, int>("e:c", 0).first;
+  EXPECT_FALSE(SWN::add_vertex_polyline_to_chain(tm, std::vector<SM::Vertex_index>(polyline.begin(), polyline.begin() + 2), small_chain));
+  // the same calls on valid input succeed
+  EXPECT_TRUE(SWN::add_vertex_polyline_to_chain(tm, std::vector<SM::Vertex_index>(polyline.begin(), polyline.begin() + 2), ch));
+  // Polyhedron_3: null handles are refused
+  auto p = make_mesh<PH>(make_torus(kNu, kNv, seed(120)));
+  std::map<boost::graph_traits<PH>::edge_descriptor, int> storage;
+  auto pch = boost::make_assoc_property_map(storage);
+  EXPECT_FALSE(SWN::add_halfedges_to_chain(p->tm, std::vector<boost::graph_traits<PH>::halfedge_descriptor>{
+                                                     boost::graph_traits<PH>::null_halfedge()}, pch));
+  EXPECT_TRUE(storage.empty());
+}
+
+TEST(OraclesApiMisuse, PropertyMapsOfAnotherMeshAreRefused)
+{
+  auto m = make_mesh<SM>(make_torus(kNu, kNv, seed(121)));
+  SM& tm = m->tm;
+  SM small;
+  CGAL::make_tetrahedron(Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(0, 1, 0), Point_3(0, 0, 1), small);
+  auto chain = tm.add_property_map<SM::Edge_index, int>("e:c", 0).first;
+  auto labels = tm.add_property_map<SM::Face_index, int>("f:W", kIntSentinel).first;
+  auto G = tm.add_property_map<SM::Edge_index, int>("e:G", kIntSentinel).first;
+  set_chain(*m, meridian(6), chain);
+  auto small_chain = small.add_property_map<SM::Edge_index, int>("e:c", 1).first;
+  auto small_labels = small.add_property_map<SM::Face_index, int>("f:W", kIntSentinel).first;
+  auto small_G = small.add_property_map<SM::Edge_index, int>("e:G", kIntSentinel).first;
+  auto small_w = small.add_property_map<SM::Halfedge_index, double>("h:w", 0.).first;
+  auto untouched = [&] {
+    for(auto f : faces(tm)) if(labels[f] != kIntSentinel) return false;
+    for(auto e : edges(tm)) if(G[e] != kIntSentinel) return false;
+    return true;
+  };
+  struct Case { std::function<bool(SWN::Solve_report&)> call; std::string message; };
+  const std::vector<Case> cases = {
+    {[&](SWN::Solve_report& r) { return CGAL::surface_winding_numbers(tm, small_chain, labels, SWN::parameters::report(std::ref(r))); },
+     "the chain map has 6 entries but the mesh has"},
+    {[&](SWN::Solve_report& r) { return CGAL::surface_winding_numbers(tm, chain, small_labels, SWN::parameters::report(std::ref(r))); },
+     "the label map has 4 entries but the mesh has"},
+    {[&](SWN::Solve_report& r) {
+       return CGAL::surface_winding_numbers(tm, chain, labels, SWN::parameters::nonbounding_chain_map(small_G, SWN::parameters::report(std::ref(r))));
+     }, "nonbounding_chain_map has 6 entries"},
+    {[&](SWN::Solve_report& r) {
+       return CGAL::surface_winding_numbers(tm, chain, labels, SWN::parameters::nonbounding_chain_map(G,
+                                            SWN::parameters::winding_number_map(small_w, SWN::parameters::report(std::ref(r)))));
+     }, "winding_number_map has 12 entries"}};
+  for(const Case& c : cases)
+  {
+    SWN::Solve_report r;
+    EXPECT_FALSE(c.call(r)) << c.message;
+    EXPECT_TRUE(r.invalid_input);
+    EXPECT_NE(r.error.find(c.message), std::string::npos) << r.error;
+    EXPECT_NE(r.error.find("another mesh"), std::string::npos) << r.error;
+    EXPECT_TRUE(untouched());
+  }
+  SWN::Solve_report r;   // the mesh's own maps: solved, the meridian is G
+  ASSERT_TRUE(CGAL::surface_winding_numbers(tm, chain, labels, SWN::parameters::nonbounding_chain_map(G, SWN::parameters::report(std::ref(r))))) << r.error;
+  for(auto e : edges(tm)) EXPECT_EQ(G[e], chain[e]);
+}
+
+// Scaling is exact and the method scale invariant: 1e160 (areas would overflow) and 1e-160 (they would
+// underflow) give the labels, G and w of the unit-size torus.
+TEST(OraclesScale, ExtremeUnitsSolveLikeTheUnitMesh)
+{
+  const Soup unit = make_torus(kNu, kNv, seed(122));
+  Soup_chain c = torus_square(2, 2, 7, 6);
+  for(const auto& kv : meridian(9)) c[kv.first] += kv.second;
+  auto mu = make_mesh<SM>(unit);
+  const Outcome ref = run(*mu, c);
+  ASSERT_TRUE(ref.ok) << ref.rep.error;
+  for(double scale : {1e160, 1e-160})
+  {
+    Soup s = unit;
+    for(Point_3& p : s.points) p = Point_3(p.x() * scale, p.y() * scale, p.z() * scale);
+    auto ms = make_mesh<SM>(s);
+    const Outcome o = run(*ms, c);
+    ASSERT_TRUE(o.ok) << scale << ": " << o.rep.error;
+    EXPECT_EQ(o.W, ref.W) << scale;
+    EXPECT_EQ(o.G, ref.G) << scale;
+    for(std::size_t f = 0; f < ref.w.size(); ++f)
+      for(int k = 0; k < 3; ++k) EXPECT_NEAR(o.w[f][k], ref.w[f][k], 1e-9) << scale << " face " << f;
+  }
+}
+
+// ==========================================================================================
 // Self-tests of the harness: the checks above must be able to fail.
 // ==========================================================================================
 

@@ -6,9 +6,11 @@
 
 #include <CGAL/Surface_winding_numbers/Solve_report.h>
 #include <CGAL/Surface_winding_numbers/parameters.h>
+#include <CGAL/Surface_winding_numbers/internal/descriptor_checks.h>
 #include <CGAL/Surface_winding_numbers/internal/locality_order.h>
 #include <CGAL/Surface_winding_numbers/internal/pipeline.h>
 #include <CGAL/Surface_winding_numbers/internal/polygon_tables.h>
+#include <CGAL/Surface_winding_numbers/internal/unit_scale.h>
 #ifdef CGAL_USE_GLPK
 #include <CGAL/Surface_winding_numbers/GLPK_linear_program_traits.h>
 #endif
@@ -330,6 +332,9 @@ public:
          `bounding_chain_map`, `winding_number_map`, `epsilon`, `lp_solver`, `use_reduced_residual`,
          `concurrency`, `keep_hodge_factorization`, `report`, `verbose`
          (see `CGAL::surface_winding_numbers()`).
+  \pre `chain_map`, `label_map` and the output maps of `np` have a value for every element of `tm` they
+       are keyed by. A `Surface_mesh` property map with fewer entries (a map of another mesh) is detected:
+       the solve fails as on bad input, before any map is read or written.
   \returns `true` on success. On failure no output map is written and `report().error` says why.
   */
   template <class ChainMap, class LabelMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -342,6 +347,7 @@ public:
     rep.time_mesh = report_.time_mesh;   // every report carries the construction's time
     internal::run_and_report(rep, [&] {
       if(!core_) throw Invalid_input(construction_error);   // the mesh was rejected by the constructor
+      check_maps(chain_map, label_map, np);
       std::vector<double> chain(core_->tables().ne, 0.);
       for(edge_descriptor e : edges(tm_)) chain[get(eim_, e)] = double(get(chain_map, e));
       const internal::Core_result r = internal::solve_with_parameters(*core_, chain, np, rep);
@@ -391,7 +397,8 @@ private:
     m.ne = i;
     bool triangles = true;
     for(face_descriptor f : faces(tm_)) triangles = triangles && degree(f, tm_) == 3;
-    if(!triangles) return polygon_mesh_tables(std::move(m.points));
+    if(!triangles) return polygon_mesh_tables(std::move(m.points));   // scaled there
+    m.point_scale = internal::scale_to_unit(m.points);   // exact; the method is scale invariant
     i = 0;
     for(face_descriptor f : faces(tm_))
     {
@@ -450,6 +457,31 @@ private:
   }
 
   // writes per-edge values to the edge map given for `tag`, if one was given
+  // maps of another (smaller) Surface_mesh are refused before anything is read or written
+  template <class Map, class KeyRange>
+  static void check_map(const Map& map, const KeyRange& keys, const char* what, const char* elements)
+  {
+    const std::string error = internal::map_coverage_error(map, keys, what, elements);
+    if(!error.empty()) throw Invalid_input(error);
+  }
+  template <class Tag, class NamedParameters, class KeyRange>
+  static void check_map(const NamedParameters& np, Tag tag, const KeyRange& keys, const char* what, const char* elements)
+  {
+    if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, Tag>::value)
+      check_map(CGAL::parameters::get_parameter(np, tag), keys, what, elements);
+  }
+  template <class ChainMap, class LabelMap, class NamedParameters>
+  void check_maps(const ChainMap& chain_map, const LabelMap& label_map, const NamedParameters& np) const
+  {
+    namespace snp = Surface_winding_numbers::internal_np;
+    check_map(chain_map, edges(tm_), "the chain map", "edges");
+    check_map(label_map, faces(tm_), "the label map", "faces");
+    check_map<snp::nonbounding_chain_map_t>(np, snp::nonbounding_chain_map, edges(tm_), "nonbounding_chain_map", "edges");
+    check_map<snp::nonbounding_chain_real_map_t>(np, snp::nonbounding_chain_real_map, edges(tm_), "nonbounding_chain_real_map", "edges");
+    check_map<snp::bounding_chain_map_t>(np, snp::bounding_chain_map, edges(tm_), "bounding_chain_map", "edges");
+    check_map<snp::winding_number_map_t>(np, snp::winding_number_map, halfedges(tm_), "winding_number_map", "halfedges");
+  }
+
   template <class Tag, class NamedParameters, class Values>
   void write_edge_values(const NamedParameters& np, Tag tag, const Values& values) const
   {

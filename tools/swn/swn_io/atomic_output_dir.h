@@ -6,6 +6,9 @@
 #ifndef CGAL_SWN_TOOL_IO_ATOMIC_OUTPUT_DIR_H
 #define CGAL_SWN_TOOL_IO_ATOMIC_OUTPUT_DIR_H
 
+#include <atomic>
+#include <csignal>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <ios>
@@ -16,6 +19,9 @@
 #include <system_error>
 #include <utility>
 #include <vector>
+
+#include <signal.h>
+#include <unistd.h>
 
 namespace CGAL {
 namespace Surface_winding_numbers {
@@ -40,6 +46,55 @@ void write_to_path(const std::string& path, Writer&& writer, const std::string& 
     throw std::runtime_error("write error on " + name);
 }
 
+// The temporary files and created directories of every live Atomic_output_dir, for the signal handler
+// of Atomic_output_dir::remove_temporaries_on_signals(): a fixed array (no allocation, no lock), each
+// slot free (0), being filled (1), a file (2) or a directory (3). Zero-initialized before main().
+struct Signal_cleanup_registry
+{
+  static constexpr int slots = 64;
+  static constexpr std::size_t path_size = 4096;
+  std::atomic<int> state[slots];
+  char path[slots][path_size];
+};
+inline Signal_cleanup_registry signal_cleanup_registry;
+
+enum Signal_cleanup_kind { SLOT_FREE = 0, SLOT_FILLING = 1, SLOT_FILE = 2, SLOT_DIRECTORY = 3 };
+
+// Registers `p` (a file or a directory to remove on a signal); returns its slot, or -1 when the array is
+// full or the path too long (the object still removes it on destruction, only not on a signal).
+inline int register_for_signal_cleanup(const std::string& p, Signal_cleanup_kind kind)
+{
+  Signal_cleanup_registry& r = signal_cleanup_registry;
+  if(p.size() >= Signal_cleanup_registry::path_size) return -1;
+  for(int i = 0; i < Signal_cleanup_registry::slots; ++i)
+  {
+    int expected = SLOT_FREE;
+    if(!r.state[i].compare_exchange_strong(expected, SLOT_FILLING)) continue;
+    std::memcpy(r.path[i], p.c_str(), p.size() + 1);
+    r.state[i].store(kind);
+    return i;
+  }
+  return -1;
+}
+
+inline void unregister_for_signal_cleanup(int& slot) noexcept
+{
+  if(slot >= 0) signal_cleanup_registry.state[slot].store(SLOT_FREE);
+  slot = -1;
+}
+
+// async-signal-safe: unlink() and rmdir() on the registered paths (files first, directories deepest
+// first: they were registered parent first), then the signal's default action (SA_RESETHAND)
+extern "C" inline void remove_temporaries_and_reraise(int sig)
+{
+  Signal_cleanup_registry& r = signal_cleanup_registry;
+  for(int i = 0; i < Signal_cleanup_registry::slots; ++i)
+    if(r.state[i].load() == SLOT_FILE) ::unlink(r.path[i]);
+  for(int i = Signal_cleanup_registry::slots - 1; i >= 0; --i)
+    if(r.state[i].load() == SLOT_DIRECTORY) ::rmdir(r.path[i]);
+  ::raise(sig);   // delivered when the handler returns, with the default action restored
+}
+
 } // namespace internal
 
 /*!
@@ -50,6 +105,10 @@ void write_to_path(const std::string& path, Writer&& writer, const std::string& 
   without `commit()` (an exception, an early return), the temporaries are removed, and so are the directories
   the constructor created if they are empty, so that a failed run leaves nothing behind. Renames within one
   directory are atomic per file; if a rename fails in `commit()`, the files renamed before it stay.
+
+  A signal that ends the process skips the destructor: after `remove_temporaries_on_signals()`, SIGINT,
+  SIGTERM and SIGHUP remove the temporaries (and the directories created) of every live object first,
+  then end the process by the same signal.
 */
 class Atomic_output_dir
 {
@@ -76,7 +135,7 @@ public:
         cleanup_dirs();
         throw std::runtime_error("cannot create output directory " + it->string());
       }
-      if(made) created_.push_back(*it);
+      if(made) created_.push_back(Directory{*it, internal::register_for_signal_cleanup(it->string(), internal::SLOT_DIRECTORY)});
     }
     if(!fs::is_directory(dir_, ec))
       throw std::runtime_error("output path " + dir_.string() + " is not a directory");
@@ -85,6 +144,29 @@ public:
     std::ostringstream s;
     s << std::hex << (dist(rd) & 0xffffffffffffULL);
     tag_ = s.str();
+  }
+
+  /*!
+    \brief installs, once per process, the handler of SIGINT, SIGTERM and SIGHUP that removes the
+    temporaries and created directories of every live `Atomic_output_dir`, restores the signal's default
+    action and raises the signal again (so the process ends as it would have, a shell reporting 128 + the
+    signal number). A signal that is ignored stays ignored (`nohup`). Meant for programs (the swn tool),
+    not libraries: it replaces the process's handlers of these signals.
+  */
+  static void remove_temporaries_on_signals()
+  {
+    for(int sig : {SIGINT, SIGTERM, SIGHUP})
+    {
+      struct sigaction old_action;
+      if(::sigaction(sig, nullptr, &old_action) != 0 || old_action.sa_handler == SIG_IGN) continue;
+      struct sigaction action;
+      std::memset(&action, 0, sizeof(action));
+      action.sa_handler = &internal::remove_temporaries_and_reraise;
+      sigemptyset(&action.sa_mask);
+      for(int other : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&action.sa_mask, other);
+      action.sa_flags = SA_RESETHAND;
+      ::sigaction(sig, &action, nullptr);
+    }
   }
 
   Atomic_output_dir(const Atomic_output_dir&) = delete;
@@ -109,10 +191,10 @@ public:
        name.find('\\') != std::string::npos)
       throw std::invalid_argument("Atomic_output_dir: invalid file name '" + name + "'");
     for(const auto& f : files_)
-      if(f.first == name)
+      if(f.name == name)
         throw std::invalid_argument("Atomic_output_dir: file '" + name + "' registered twice");
     std::filesystem::path tmp = dir_ / ("." + name + ".swn-tmp-" + tag_);
-    files_.emplace_back(name, tmp);
+    files_.push_back(File{name, tmp, internal::register_for_signal_cleanup(tmp.string(), internal::SLOT_FILE)});
     return tmp.string();
   }
 
@@ -135,13 +217,15 @@ public:
     for(auto& f : files_)
     {
       std::error_code ec;
-      std::filesystem::rename(f.second, dir_ / f.first, ec);
+      std::filesystem::rename(f.temporary, dir_ / f.name, ec);
       if(ec)
-        throw std::runtime_error("cannot move " + f.second.string() + " to " + final_path(f.first) + ": " + ec.message());
-      f.second.clear();
+        throw std::runtime_error("cannot move " + f.temporary.string() + " to " + final_path(f.name) + ": " + ec.message());
+      f.temporary.clear();
+      internal::unregister_for_signal_cleanup(f.slot);
     }
     committed_ = true;
     files_.clear();
+    for(Directory& d : created_) internal::unregister_for_signal_cleanup(d.slot);
     created_.clear();
   }
 
@@ -152,7 +236,8 @@ public:
     for(auto& f : files_)
     {
       std::error_code ec;
-      if(!f.second.empty()) std::filesystem::remove(f.second, ec);
+      if(!f.temporary.empty()) std::filesystem::remove(f.temporary, ec);
+      internal::unregister_for_signal_cleanup(f.slot);
     }
     files_.clear();
     cleanup_dirs();
@@ -162,7 +247,7 @@ public:
   std::vector<std::string> names() const
   {
     std::vector<std::string> r;
-    for(const auto& f : files_) r.push_back(f.first);
+    for(const auto& f : files_) r.push_back(f.name);
     return r;
   }
 
@@ -172,15 +257,19 @@ private:
     for(auto it = created_.rbegin(); it != created_.rend(); ++it)
     {
       std::error_code ec;
-      std::filesystem::remove(*it, ec);  // only removes empty directories
+      std::filesystem::remove(it->path, ec);  // only removes empty directories
+      internal::unregister_for_signal_cleanup(it->slot);
     }
     created_.clear();
   }
 
+  struct File { std::string name; std::filesystem::path temporary; int slot; };
+  struct Directory { std::filesystem::path path; int slot; };
+
   std::filesystem::path dir_;
   std::string tag_;
-  std::vector<std::pair<std::string, std::filesystem::path> > files_;
-  std::vector<std::filesystem::path> created_;
+  std::vector<File> files_;
+  std::vector<Directory> created_;
   bool committed_ = false;
 };
 

@@ -115,6 +115,12 @@ inline bool parse_int(std::string_view tok, long long& x)
   return r.ec == std::errc() && r.ptr == e;
 }
 
+/// `idx + offset` as a 0-based index: false if the sum is negative or overflows (hostile `#offset` values).
+inline bool add_index_offset(long long idx, long long offset, long long& r)
+{
+  return !__builtin_add_overflow(idx, offset, &r) && r >= 0;
+}
+
 /// Quotes a token for an error message (truncated, non-printable bytes escaped).
 inline std::string quote(std::string_view tok)
 {
@@ -215,14 +221,22 @@ inline std::array<double, 3> vertex_coordinates(const std::vector<std::string_vi
   return p;
 }
 
-/// Opens an input file in binary mode; `what` names the kind of file ("a mesh file").
+/// Opens an input file in binary mode; `what` names the kind of file ("a mesh file"). Only regular files
+/// (or symbolic links to one) are read: a device such as /dev/zero would be read forever and a FIFO
+/// without a writer would block, so both are refused before they are opened.
 inline std::ifstream open_input_file(const std::string& filename, const std::string& what)
 {
+  namespace fs = std::filesystem;
   std::error_code ec;
-  if(!std::filesystem::exists(filename, ec))
+  const fs::file_status st = fs::status(filename, ec);
+  if(!fs::exists(st))
     throw Input_error(filename, 0, "no such file");
-  if(std::filesystem::is_directory(filename, ec))
+  if(fs::is_directory(st))
     throw Input_error(filename, 0, "is a directory, not " + what);
+  if(!fs::is_regular_file(st))
+    throw Input_error(filename, 0, std::string("is not a regular file (") +
+                                       (fs::is_fifo(st) ? "a FIFO" : fs::is_socket(st) ? "a socket" : "a device") +
+                                       "): only regular files are read as " + what);
   std::ifstream is(filename, std::ios::binary);
   if(!is)
     throw Input_error(filename, 0, "cannot open file for reading");

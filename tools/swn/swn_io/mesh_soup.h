@@ -11,6 +11,7 @@
 #include "swn_io/errors.h"
 
 #include <CGAL/Surface_winding_numbers/internal/union_find.h>
+#include <CGAL/Surface_winding_numbers/internal/unit_scale.h>
 
 #include <CGAL/Surface_mesh.h>
 
@@ -71,7 +72,8 @@ struct Mesh_read_info
   std::size_t duplicated_vertex_positions = 0;
   /// STL only: number of corner records merged into an existing vertex (exact equality of coordinates)
   std::size_t merged_stl_vertices = 0;
-  /// faces with exactly zero area (collinear corners); kept
+  /// polygon soups only: faces with exactly zero area (collinear corners), kept; triangle meshes with such a
+  /// face are refused (check_face_areas())
   std::size_t degenerate_faces = 0;
   /// human-readable warnings (one line each)
   std::vector<std::string> warnings;
@@ -178,6 +180,27 @@ void soup_from_points_and_polygons(const std::vector<Point>& points, const std::
 }
 
 // ------------------------------------------------------------------------------------------------ checks
+
+// Zero-area faces are refused with their line, by the library's criterion and scaling (the points brought
+// to a unit bounding box: the test depends on the shape of the faces, not on the unit of the file).
+inline void check_face_areas(const Triangle_soup& soup, const std::string& file)
+{
+  static_assert(sizeof(std::array<double, 3>) == 3 * sizeof(double), "points must be contiguous");
+  const double s = CGAL::Surface_winding_numbers::internal::unit_scale(soup.points.empty() ? nullptr : soup.points[0].data(),
+                                                                       soup.points.size());
+  for(std::size_t f = 0; f < soup.triangles.size(); ++f)
+  {
+    const auto& t = soup.triangles[f];
+    double p[3][3];
+    for(int c = 0; c < 3; ++c)
+      for(int k = 0; k < 3; ++k) p[c][k] = s * soup.points[t[c]][k];
+    if(CGAL::Surface_winding_numbers::internal::zero_area_triangle(p[0], p[1], p[2]))
+      throw Input_error(file, f < soup.triangle_lines.size() ? soup.triangle_lines[f] : 0,
+                        "face " + std::to_string(f) + " has zero area (degenerate triangle): its vertices " +
+                            std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " + std::to_string(t[2]) +
+                            " are collinear or coincide");
+  }
+}
 
 inline std::string edge_name(std::size_t a, std::size_t b)
 {
@@ -371,8 +394,8 @@ inline void soup_statistics(const Triangle_soup& soup, Mesh_read_info& info)
     info.warnings.push_back(std::to_string(degenerate) + " faces have zero area (collinear corners); kept");
 }
 
-/// Validates a triangle soup as an oriented 2-manifold (check_soup_faces(), oriented_manifold_problem()) and
-/// fills the statistics of `info`. Throws `Input_error` on the first problem.
+/// Validates a triangle soup as an oriented 2-manifold (check_soup_faces(), oriented_manifold_problem()) without
+/// zero-area faces (check_face_areas()) and fills the statistics of `info`. Throws `Input_error` on the first problem.
 inline void check_triangle_soup(const Triangle_soup& soup, const std::string& file, Mesh_read_info& info,
                                 std::vector<std::uint32_t>& twin)
 {
@@ -381,6 +404,7 @@ inline void check_triangle_soup(const Triangle_soup& soup, const std::string& fi
   const std::string problem = oriented_manifold_problem(soup, twin, line);
   if(!problem.empty())
     throw Input_error(file, line, soup.polygons.empty() ? problem : problem + ": only triangle meshes are supported here");
+  check_face_areas(soup, file);
   soup_statistics(soup, info);
 }
 

@@ -55,6 +55,10 @@
   - <b>Halfedge chain</b> (`# swn halfedges`): lines `h SRC DST [M]` with 0-based vertices; SRC->DST must be an
     edge of the mesh; the optional multiplicity M is an integer in [1, 1000] (default 1); `#` starts a comment.
 
+  Limits: a curve has at most `max_curve_segments()` segments counted with multiplicity (10^6 plus two per
+  mesh edge), so that the work and the output stay proportional to the mesh and the file; more is an
+  `Input_error` on the line where the limit is passed.
+
   Errors (all `Input_error` with file and line): unparsable number, index out of range, trailing junk, t outside
   [0,1], a segment whose two points share no face, a face point, an unknown record, and an empty curve (no
   segment and no dual pair at all; reported with line 0). Files are read in a single pass; nothing loops on bad
@@ -66,6 +70,17 @@ namespace Surface_winding_numbers {
 namespace IO {
 
 namespace internal {
+
+/// The most curve segments, counted with multiplicity, a curve file may give on a mesh with `edges` edges:
+/// 10^6 plus two per edge. The work and the output grow with this number, not with the size of the file
+/// (a line `h A B 1000` is a thousand segments), so a few kilobytes must not ask for gigabytes.
+inline std::size_t max_curve_segments(std::size_t edges) { return 1000000 + 2 * edges; }
+
+inline std::string too_many_segments(std::size_t edges)
+{
+  return "the curve has more than " + std::to_string(max_curve_segments(edges)) +
+         " segments (counted with multiplicity; the limit is 10^6 + 2 x " + std::to_string(edges) + " mesh edges)";
+}
 
 template <class Point>
 void faces_of_point(const CGAL::Surface_mesh<Point>& mesh,
@@ -122,6 +137,9 @@ void validate_curve_set(const Curve_set& cs, const CGAL::Surface_mesh<Point>& me
     if(d.face_a >= mesh.number_of_faces() || d.face_b >= mesh.number_of_faces())
       throw Input_error(cs.file, d.line, "face index " + std::to_string(std::max(d.face_a, d.face_b)) +
                                             " is out of range (" + std::to_string(mesh.number_of_faces()) + " faces)");
+  if(cs.segments.size() > max_curve_segments(mesh.number_of_edges()))
+    throw Input_error(cs.file, cs.segments[max_curve_segments(mesh.number_of_edges())].line,
+                      too_many_segments(mesh.number_of_edges()));
   std::vector<std::size_t> fa, fb, common;
   for(const Curve_segment& s : cs.segments)
   {
@@ -145,8 +163,8 @@ void validate_curve_set(const Curve_set& cs, const CGAL::Surface_mesh<Point>& me
 
 inline std::size_t add_offset(long long idx, long long offset, const Line_reader& lr, const char* what)
 {
-  long long r = idx + offset;
-  if(r < 0)
+  long long r;
+  if(!add_index_offset(idx, offset, r))
     lr.fail(std::string(what) + " index " + std::to_string(idx) + " is out of range (offset " + std::to_string(offset) + ")");
   return static_cast<std::size_t>(r);
 }
@@ -334,9 +352,10 @@ inline Curve_set read_polyline_curves(std::istream& is, const std::string& file,
   });
 }
 
-// is_edge(s, t): are the vertices s != t joined by an edge
+// is_edge(s, t): are the vertices s != t joined by an edge; `edges`: how many edges the surface has (for
+// max_curve_segments())
 template <class IsEdge>
-Curve_set read_halfedge_curves(std::istream& is, const std::string& file, std::size_t nv, IsEdge is_edge)
+Curve_set read_halfedge_curves(std::istream& is, const std::string& file, std::size_t nv, std::size_t edges, IsEdge is_edge)
 {
   return read_vertex_records(is, file, nv,
                              [&](const std::vector<std::string_view>& tok, const Line_reader& lr, Curve_set& cs, auto& vertex) {
@@ -353,6 +372,8 @@ Curve_set read_halfedge_curves(std::istream& is, const std::string& file, std::s
     const std::size_t s = cs.points[a].element, t = cs.points[b].element;
     if(s == t || !is_edge(s, t))
       lr.fail("halfedge " + std::to_string(s) + " -> " + std::to_string(t) + " is not an edge of the mesh");
+    if(cs.segments.size() + static_cast<std::size_t>(m) > max_curve_segments(edges))
+      lr.fail(too_many_segments(edges));
     for(long long k = 0; k < m; ++k)
       cs.segments.push_back(Curve_segment{a, b, lr.line_number()});
   });
@@ -417,7 +438,7 @@ Curve_set read_curves(std::istream& is, const std::string& file, const CGAL::Sur
   Curve_set cs;
   if(format == Curve_file_format::POLYLINES) cs = internal::read_polyline_curves(is, file, nv);
   else if(format == Curve_file_format::HALFEDGES)
-    cs = internal::read_halfedge_curves(is, file, nv, [&](std::size_t s, std::size_t t) {
+    cs = internal::read_halfedge_curves(is, file, nv, mesh.number_of_edges(), [&](std::size_t s, std::size_t t) {
       return CGAL::halfedge(typename Mesh::Vertex_index(static_cast<typename Mesh::size_type>(s)),
                             typename Mesh::Vertex_index(static_cast<typename Mesh::size_type>(t)), mesh).second;
     });

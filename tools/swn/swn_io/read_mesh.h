@@ -36,7 +36,8 @@ namespace IO {
 
   Validation: the readers report, and never repair. They throw `Input_error` (with file name and 1-based line
   number where a line exists) on: a missing or unreadable file, an unparsable line, an index out of range, a
-  face that is not a triangle, a NaN or infinite coordinate, a face with a repeated vertex, a mesh without
+  face that is not a triangle, a NaN or infinite coordinate, a face with a repeated vertex, a face of zero
+  area (collinear or coincident corners, tested in a unit bounding box: independent of the unit), a mesh without
   faces, and a surface that is not an oriented 2-manifold (an edge shared by more than two faces, two faces
   traversing an edge in the same direction, or a vertex where several fans of faces meet). Unreferenced
   vertices are kept as isolated vertices and reported in `Mesh_read_info`, as are exactly duplicated vertex
@@ -131,7 +132,8 @@ Mesh_read_info read_mesh(const std::string& filename, CGAL::Surface_mesh<Point>&
   triangle mesh (the first problem in file order, as `read_mesh()` would report it); `mesh` is then empty and
   `soup` holds the checked faces. `info` gets the statistics, warnings and OBJ curve records either way.
   \throws Input_error on a missing file or invalid input (indices out of range, repeated vertices, faces with
-  fewer than three vertices, non-finite coordinates, no face)
+  fewer than three vertices, non-finite coordinates, no face, a zero-area face when every face is a
+  triangle)
 */
 template <class Point>
 std::string read_mesh_or_soup(const std::string& filename, CGAL::Surface_mesh<Point>& mesh, Triangle_soup& soup,
@@ -149,6 +151,8 @@ std::string read_mesh_or_soup(const std::string& filename, CGAL::Surface_mesh<Po
   std::vector<std::uint32_t> twin;
   std::size_t line = 0;
   std::string problem = internal::oriented_manifold_problem(soup, twin, line);
+  if(soup.polygons.empty())
+    internal::check_face_areas(soup, filename);   // the library refuses zero-area triangles: say where, now
   internal::soup_statistics(soup, info);
   if(!problem.empty())
     return line > 0 ? filename + ":" + std::to_string(line) + ": " + problem : problem;

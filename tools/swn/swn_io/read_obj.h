@@ -117,11 +117,12 @@ inline void read_OBJ_soup(std::istream& is, const std::string& file, Triangle_so
         if(!ok)
           lr.fail("cannot parse index " + quote(tok[k]) + " in '" + std::string(kw) + "' record");
         long long r;
+        bool in_range;
         if(i < 0)  // OBJ relative index
-          r = static_cast<long long>(is_l ? soup.points.size() : number_of_faces(soup)) + i;
+          in_range = (r = static_cast<long long>(is_l ? soup.points.size() : number_of_faces(soup)) + i) >= 0;
         else
-          r = i + offset;
-        if(r < 0)
+          in_range = add_index_offset(i, offset, r);
+        if(!in_range)
           lr.fail("index " + std::to_string(i) + " in '" + std::string(kw) + "' record is out of range (offset " +
                   std::to_string(offset) + ")");
         p.idx.push_back(r);

@@ -12,6 +12,7 @@
 #include <CGAL/IO/PLY.h>
 #include <CGAL/Simple_cartesian.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -141,6 +142,42 @@ struct Ply_header
   int indices = -1;                 // the list property of the face element
 };
 
+inline std::size_t ply_type_size(Ply_type t)
+{
+  switch(t)
+  {
+    case Ply_type::INT8: case Ply_type::UINT8: return 1;
+    case Ply_type::INT16: case Ply_type::UINT16: return 2;
+    case Ply_type::FLOAT64: return 8;
+    default: return 4;
+  }
+}
+
+// The counts of the header must fit in the data: a record takes at least one byte per property in ASCII
+// (a token), and its scalars and list counts in binary. Checked before reading, so that a few bytes
+// announcing billions of records fail at once, on the element's line; an element with records but no
+// property (nothing to read, so nothing bounds its count) is refused.
+inline void check_ply_element_sizes(const Ply_header& header, std::size_t data_bytes, const std::string& file)
+{
+  std::size_t needed = 0;
+  for(const Ply_element& el : header.elements)
+  {
+    if(el.count == 0) continue;
+    if(el.props.empty())
+      throw Input_error(file, el.line, "element " + quote(el.name) + " declares " + std::to_string(el.count) +
+                                           " records but no property");
+    std::size_t record = 0;
+    for(const Ply_property& p : el.props)
+      record += header.format == 0 ? 1 : ply_type_size(p.is_list ? p.count_type : p.type);
+    const std::size_t left = data_bytes - std::min(needed, data_bytes);
+    if(static_cast<unsigned long long>(el.count) > left / record)
+      throw Input_error(file, el.line, "element " + quote(el.name) + " declares " + std::to_string(el.count) +
+                                           " records, more than the " + std::to_string(data_bytes) +
+                                           " bytes of data can hold");
+    needed += static_cast<std::size_t>(el.count) * record;
+  }
+}
+
 inline Ply_header read_ply_header(const std::string& data, const std::string& file)
 {
   Ply_header header;
@@ -237,6 +274,10 @@ inline Ply_header read_ply_header(const std::string& data, const std::string& fi
       }
       if(header.x < 0 || header.y < 0 || header.z < 0)
         throw Input_error(file, el.line, "the 'vertex' element lacks an x, y or z property");
+      // CGAL's binary reader reads coordinates as float or double only (any other type: a null dereference)
+      for(int k : {header.x, header.y, header.z})
+        if(header.format != 0 && el.props[k].type != Ply_type::FLOAT32 && el.props[k].type != Ply_type::FLOAT64)
+          throw Input_error(file, el.line, "binary PLY: vertex coordinates x, y, z must be 'float' or 'double'");
     }
     else if(el.name == "face")
     {
@@ -256,6 +297,7 @@ inline Ply_header read_ply_header(const std::string& data, const std::string& fi
   }
   if(header.vertex < 0)
     throw Input_error(file, 0, "PLY file without a 'vertex' element");
+  check_ply_element_sizes(header, data.size() - header.body, file);
   return header;
 }
 
@@ -319,7 +361,52 @@ inline void read_ply_ascii_body(const std::string& data, const Ply_header& heade
   body.check_end();
 }
 
-// Binary data has no lines to report: CGAL's reader serves (the header was checked above, with its lines).
+// Walks the binary data record by record before CGAL's reader sees it: every list length must fit in
+// the bytes left (a length of 4e9 would otherwise be read as a vector of 4e9 values), faces must be
+// triangles, and the records must end where the data ends.
+inline void check_ply_binary_layout(const std::string& data, const Ply_header& header, const std::string& file)
+{
+  const bool big_endian = header.format == 2;
+  std::size_t pos = header.body;
+  auto read_count = [&](Ply_type t) -> long long {
+    const std::size_t n = ply_type_size(t);
+    unsigned long long u = 0;
+    for(std::size_t k = 0; k < n; ++k)
+      u |= static_cast<unsigned long long>(static_cast<unsigned char>(data[pos + k])) << (8 * (big_endian ? n - 1 - k : k));
+    pos += n;
+    const bool is_signed = t == Ply_type::INT8 || t == Ply_type::INT16 || t == Ply_type::INT32;
+    if(is_signed && (u >> (8 * n - 1)) != 0) return -1;   // negative
+    return static_cast<long long>(u);
+  };
+  for(std::size_t i = 0; i < header.elements.size(); ++i)
+  {
+    const Ply_element& el = header.elements[i];
+    for(long long r = 0; r < el.count; ++r)
+      for(std::size_t k = 0; k < el.props.size(); ++k)
+      {
+        const Ply_property& pr = el.props[k];
+        const std::size_t head = ply_type_size(pr.is_list ? pr.count_type : pr.type);
+        if(data.size() - pos < head)
+          throw Input_error(file, 0, "unexpected end of binary PLY data in record " + std::to_string(r) + " of element " +
+                                         quote(el.name));
+        if(!pr.is_list) { pos += head; continue; }
+        const long long n = read_count(pr.count_type);
+        if(int(i) == header.face && int(k) == header.indices && n != 3)
+          throw Input_error(file, 0, n < 0 ? "negative list length in face " + std::to_string(r)
+                                           : face_arity_message(static_cast<std::size_t>(r), static_cast<std::size_t>(n)));
+        if(n < 0 || static_cast<unsigned long long>(n) > (data.size() - pos) / ply_type_size(pr.type))
+          throw Input_error(file, 0, "list " + quote(pr.name) + " of record " + std::to_string(r) + " of element " +
+                                         quote(el.name) + " announces " + std::to_string(n) +
+                                         " values, more than the binary PLY data holds");
+        pos += static_cast<std::size_t>(n) * ply_type_size(pr.type);
+      }
+  }
+  if(pos != data.size())
+    throw Input_error(file, 0, "trailing junk after the binary PLY data (" + std::to_string(data.size() - pos) + " bytes)");
+}
+
+// Binary data has no lines to report: CGAL's reader serves (the header was checked above, with its lines,
+// and the layout of the data by check_ply_binary_layout()).
 inline void read_ply_binary_body(const std::string& data, const std::string& file, Triangle_soup& soup)
 {
   std::istringstream in(data, std::ios::in | std::ios::binary);
@@ -342,7 +429,11 @@ inline void read_PLY_soup(std::istream& is, const std::string& file, Triangle_so
     throw Input_error(file, 0, "read error");
   const Ply_header header = read_ply_header(data, file);
   if(header.format == 0) read_ply_ascii_body(data, header, file, soup);
-  else read_ply_binary_body(data, file, soup);
+  else
+  {
+    check_ply_binary_layout(data, header, file);
+    read_ply_binary_body(data, file, soup);
+  }
 }
 
 } // namespace internal

@@ -96,7 +96,7 @@ inline Curve_set read_curve_file(const std::string& filename, const Triangle_sou
   Curve_set cs;
   if(format == Curve_file_format::POLYLINES) cs = internal::read_polyline_curves(ss, filename, nv);
   else if(format == Curve_file_format::HALFEDGES)
-    cs = internal::read_halfedge_curves(ss, filename, nv,
+    cs = internal::read_halfedge_curves(ss, filename, nv, edges.size(),
                                         [&](std::size_t a, std::size_t b) { return internal::has_soup_edge(edges, a, b); });
   else
     cs = internal::read_authors_curves(ss, filename, nv, number_of_faces(soup), 0,

@@ -5,6 +5,7 @@
 #define CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_COTAN_WEIGHTS_H
 
 #include <CGAL/Surface_winding_numbers/internal/mesh_tables.h>
+#include <CGAL/Surface_winding_numbers/internal/unit_scale.h>
 
 #include <algorithm>
 #include <cfloat>
@@ -19,8 +20,9 @@ namespace internal {
 constexpr double min_cotan_weight = 1e-3;
 constexpr double max_cotan_weight = 1e3;
 
-// Rejects what no weight can be computed for: non-finite coordinates and zero-area faces. Reports
-// the first offending element in the input's numbering.
+// Rejects what no weight can be computed for: non-finite coordinates and zero-area faces (tested on
+// the points brought to a unit box by the table builders, so independently of the unit). Reports the
+// first offending element in the input's numbering.
 inline void check_geometry(const Mesh_tables& m)
 {
   std::size_t bad = npos;
@@ -30,13 +32,8 @@ inline void check_geometry(const Mesh_tables& m)
   if(bad != npos) throw Invalid_input("vertex " + std::to_string(bad) + " has a non-finite coordinate");
   for(std::size_t f = 0; f < m.nf; ++f)
   {
-    const double *p = m.point(m.fv[3 * f]), *q = m.point(m.fv[3 * f + 1]), *r = m.point(m.fv[3 * f + 2]);
-    auto squared_distance = [](const double* x, const double* y) {
-      return (x[0] - y[0]) * (x[0] - y[0]) + (x[1] - y[1]) * (x[1] - y[1]) + (x[2] - y[2]) * (x[2] - y[2]);
-    };
-    const double l2 = std::max({squared_distance(p, q), squared_distance(p, r), squared_distance(q, r)});
-    // a face is degenerate when its area is at round-off level of its size
-    if(!(2 * m.face_area(f) > 16 * DBL_EPSILON * l2)) bad = std::min(bad, m.input_face_index(f));
+    if(zero_area_triangle(m.point(m.fv[3 * f]), m.point(m.fv[3 * f + 1]), m.point(m.fv[3 * f + 2])))
+      bad = std::min(bad, m.input_face_index(f));
   }
   if(bad != npos) throw Invalid_input("face " + std::to_string(bad) + " has zero area (degenerate triangle)");
 }

@@ -131,6 +131,7 @@ inline Mesh_tables renumbered_mesh_tables(const Mesh_tables& m, const Table_numb
   r.ne = m.ne;
   r.nf = m.nf;
   r.points.resize(3 * m.nv);
+  r.point_scale = m.point_scale;
   r.input_vertex.resize(m.nv);
   for(std::size_t v = 0; v < m.nv; ++v)
   {

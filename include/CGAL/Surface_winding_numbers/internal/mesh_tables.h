@@ -136,6 +136,8 @@ struct Mesh_tables
   }
 
   const double* point(std::size_t v) const { return &points[3 * v]; }
+  // the points are the input's coordinates times this power of two (unit_scale(): a unit bounding box)
+  double point_scale = 1.;
 
   // area of face f
   double face_area(std::size_t f) const

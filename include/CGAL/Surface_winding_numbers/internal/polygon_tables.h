@@ -11,6 +11,7 @@
 
 #include <CGAL/Surface_winding_numbers/Solve_report.h>
 #include <CGAL/Surface_winding_numbers/internal/mesh_tables.h>
+#include <CGAL/Surface_winding_numbers/internal/unit_scale.h>
 
 #include <algorithm>
 #include <array>
@@ -108,6 +109,7 @@ Mesh_tables polygon_mesh_tables(std::vector<double> xyz, const PolygonRange& pol
   Mesh_tables m;
   m.nv = xyz.size() / 3;
   m.points = std::move(xyz);
+  m.point_scale = scale_to_unit(m.points);   // exact; the method is scale invariant
   std::map<std::pair<std::size_t, std::size_t>, std::size_t> edge_of;
   auto edge = [&](std::size_t a, std::size_t b) {
     const auto key = std::make_pair((std::min)(a, b), (std::max)(a, b));
