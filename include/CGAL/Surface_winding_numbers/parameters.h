@@ -23,6 +23,7 @@ enum keep_hodge_factorization_t { keep_hodge_factorization };
 enum report_t { report };
 enum refine_short_pieces_t { refine_short_pieces };
 enum minimum_piece_edges_t { minimum_piece_edges };
+enum projection_tolerance_t { projection_tolerance };
 } // namespace internal_np
 /// \endcond
 
@@ -96,6 +97,12 @@ CGAL_SWN_NAMED_PARAMETER(keep_hodge_factorization_t, keep_hodge_factorization)
 CGAL_SWN_NAMED_PARAMETER(refine_short_pieces_t, refine_short_pieces)
 /// chain pieces with fewer edges than this (default 8) that end at an interior endpoint are refined
 CGAL_SWN_NAMED_PARAMETER(minimum_piece_edges_t, minimum_piece_edges)
+/// @}
+/// \name Settings of `polylines_to_chain()`
+/// @{
+
+/// points of a polyline farther than this from the surface make gaps (default: the mean edge length)
+CGAL_SWN_NAMED_PARAMETER(projection_tolerance_t, projection_tolerance)
 /// @}
 
 #undef CGAL_SWN_NAMED_PARAMETER
