@@ -16,6 +16,7 @@
 
 #include "swn_io/atomic_output_dir.h"
 #include "swn_io/conforming_cut.h"
+#include "swn_io/curves_off_mesh.h"
 #include "swn_io/json.h"
 #include "swn_io/read_curves.h"
 #include "swn_io/read_mesh.h"
@@ -48,6 +49,12 @@ static const char* usage =
   "  --curve FILE           curve file: the authors' format (v / e / l / #offset lines), or a file whose\n"
   "                         first line is `# swn polylines` (0-based vertex polylines, one per line) or\n"
   "                         `# swn halfedges` (lines `h SRC DST [multiplicity]`)\n"
+  "  --polylines FILE       3D polylines (OBJ `v X Y Z` and 1-based `l` records) drawn off the mesh: each\n"
+  "                         point is projected onto the surface (farther than the mean edge length: a gap),\n"
+  "                         consecutive points are joined by a straight walk through faces\n"
+  "  --stamp FILE.svg       a 2D drawing (SVG path with M/L/H/V/Z, polyline, polygon, line) stamped onto the\n"
+  "                         mesh along --direction, centred and scaled to 80 % of the mesh's extent\n"
+  "  --direction X,Y,Z      the direction the drawing is stamped along (default 0,0,-1)\n"
   "  --output-dir DIR       write labels.txt, mesh.ply, w.obj, bounding.obj, nonbounding.obj,\n"
   "                         completed.obj and summary.json to DIR (created; written atomically)\n"
   "  --epsilon X            relative cost of residual jumps across the curve (default 0.01)\n"
@@ -96,6 +103,7 @@ struct Options
   std::string lp_solver = "glpk";
 #endif
   std::string mesh, curve, output_dir;
+  SIO::Off_mesh_curves off_mesh;
 #ifdef CGAL_SWN_USE_CHOLMOD
   std::string linear_solver = "cholmod";
 #else
@@ -122,6 +130,18 @@ Options parse_arguments(int argc, char** argv)
     if(a == "--help" || a == "-h") o.help = true;
     else if(a == "--curve") o.curve = next();
     else if(a == "--output-dir") o.output_dir = next();
+    else if(a == "--polylines") o.off_mesh.polylines_file = next();
+    else if(a == "--stamp") o.off_mesh.stamp_file = next();
+    else if(a == "--direction")
+    {
+      const std::string v = next();
+      std::istringstream in(v);
+      char c1 = 0, c2 = 0;
+      auto& d = o.off_mesh.direction;
+      if(!(in >> d[0] >> c1 >> d[1] >> c2 >> d[2]) || c1 != ',' || c2 != ',' || !in.eof() ||
+         !std::isfinite(d[0] + d[1] + d[2]) || d[0] * d[0] + d[1] * d[1] + d[2] * d[2] == 0)
+        throw Usage_error("--direction needs three numbers X,Y,Z, not all zero, got '" + v + "'");
+    }
     else if(a == "--lp-solver") o.lp_solver = next();
     else if(a == "--linear-solver") o.linear_solver = next();
     else if(a == "--quiet") o.quiet = true;
@@ -216,12 +236,16 @@ int main(int argc, char** argv)
       if(!opt.quiet) std::cerr << "swn: warning: " << w << "\n";
     if(SIO::has_curve_records(info)) curves.push_back(SIO::curve_set_from_obj(info, input));
     if(!opt.curve.empty()) curves.push_back(SIO::read_curve_file(opt.curve, input));
-    if(curves.empty())
-      throw SIO::Input_error(opt.mesh, 0, "no curve: give --curve FILE, or `l` lines in an OBJ mesh");
+    SIO::read_off_mesh_curves(opt.off_mesh);
+    if(curves.empty() && opt.off_mesh.empty())
+      throw SIO::Input_error(opt.mesh, 0, "no curve: give --curve FILE, --polylines FILE, --stamp FILE, or `l` lines in an OBJ mesh");
     t_read = seconds_since(t0);
     log("read " + std::to_string(num_vertices(input)) + " vertices, " + std::to_string(num_faces(input)) + " faces");
     t0 = std::chrono::steady_clock::now();
     cut = SIO::conforming_cut(input, curves);
+    if(!opt.off_mesh.empty())
+      for(const std::string& w : SIO::add_off_mesh_curves(cut, opt.off_mesh))
+        if(!opt.quiet) std::cerr << "swn: warning: " << w << "\n";
     input = Mesh();   // the run goes on with the cut's copy: free the input's memory now
     curves.clear();
     t_cut = seconds_since(t0);

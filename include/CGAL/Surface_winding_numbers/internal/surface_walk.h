@@ -7,6 +7,7 @@
 #ifndef CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_SURFACE_WALK_H
 #define CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_SURFACE_WALK_H
 
+#include <CGAL/Kernel/global_functions.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
