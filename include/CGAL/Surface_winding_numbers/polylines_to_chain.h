@@ -175,10 +175,7 @@ polylines_to_chain(TriangleMesh& tm, const PolylineRange& polylines, ChainMap ch
     result.error = "the mesh has no face";
     return result;
   }
-  double mean_edge = 0;
-  for(auto e : edges(tm))
-    mean_edge += std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, source(e, tm)), get(vpm, target(e, tm)))));
-  mean_edge /= double(num_edges(tm));
+  const double mean_edge = internal::mean_edge_length(tm, vpm);
   const double tolerance = choose_parameter(get_parameter(np, internal_np::projection_tolerance), mean_edge);
 
   Tree tree;

@@ -4,6 +4,8 @@
 #ifndef CGAL_SURFACE_WINDING_NUMBERS_STAMP_POLYLINES_H
 #define CGAL_SURFACE_WINDING_NUMBERS_STAMP_POLYLINES_H
 
+#include <CGAL/Surface_winding_numbers/internal/surface_walk.h>
+
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -101,13 +103,12 @@ fit_stamp_frame(const TriangleMesh& tm, const PolylineRange& drawing, const Vect
 along `frame.direction` and lands where its ray first hits the surface (AABB tree ray shooting).
 
 The segments of the drawing are first divided into pieces no longer than half the mean edge length of `tm`
-(measured in space), so that the stamped polylines follow the surface. Where a ray misses the mesh, or
-first hits a face from its back (the face's normal pointing away from the drawing: through a hole, the
-inside of the surface), the polyline is broken, and also where two consecutive points land more than four mean edge lengths apart (a
-jump to another layer of the surface, or a steep flank seen from the side): a polyline comes out in several pieces, and a closed one (last point equal to the
-first) stays closed only if no ray of it misses. The result is meant for `polylines_to_chain()`: where the
-drawing crosses an overhang or a hole its points land on another part of the surface, the walk between
-them fails and leaves a gap, and the surface winding numbers close the gaps.
+(measured in space), so that the stamped polylines follow the surface. A polyline is broken where a ray
+misses the mesh, where it first hits a face from its back (the face's normal pointing away from the
+drawing: through a hole, the inside of the surface), and where two consecutive points land more than four
+mean edge lengths apart (a jump to another layer of the surface, or a steep flank seen from the side). A
+closed polyline (last point equal to the first) stays closed only if it is not broken. The result is meant
+for `polylines_to_chain()`, and the surface winding numbers close the gaps.
 \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles, with an internal vertex point map
 \tparam PolylineRange a range of ranges of 2D points given as `std::array<double, 2>` (or anything with
         `p[0]`, `p[1]`)
@@ -129,10 +130,7 @@ stamp_polylines(const TriangleMesh& tm, const PolylineRange& drawing, const Stam
   Tree tree;
   PMP::build_AABB_tree(tm, tree);
   const VPM vpm = get(CGAL::vertex_point, tm);
-  double mean_edge = 0;
-  for(auto e : edges(tm))
-    mean_edge += std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, source(e, tm)), get(vpm, target(e, tm)))));
-  mean_edge /= double(num_edges(tm));
+  const double mean_edge = internal::mean_edge_length(tm, vpm);
   const double step = mean_edge / 2;
 
   for(const auto& polyline : drawing)

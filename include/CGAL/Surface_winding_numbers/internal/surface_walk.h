@@ -24,6 +24,16 @@ namespace CGAL {
 namespace Surface_winding_numbers {
 namespace internal {
 
+// the mean length of the edges of tm
+template <class TriangleMesh, class VertexPointMap>
+double mean_edge_length(const TriangleMesh& tm, VertexPointMap vpm)
+{
+  double sum = 0;
+  for(auto e : edges(tm))
+    sum += std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, source(e, tm)), get(vpm, target(e, tm)))));
+  return num_edges(tm) == 0 ? 0. : sum / double(num_edges(tm));
+}
+
 // A point of the surface: a vertex, a point on an edge (at `t` from source(h) to target(h), 0 < t < 1)
 // or a point inside a face.
 template <class TriangleMesh, class Point>
