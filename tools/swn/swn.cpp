@@ -244,8 +244,9 @@ int main(int argc, char** argv)
     t0 = std::chrono::steady_clock::now();
     cut = SIO::conforming_cut(input, curves);
     if(!opt.off_mesh.empty())
-      for(const std::string& w : SIO::add_off_mesh_curves(cut, opt.off_mesh))
+      SIO::add_off_mesh_curves(cut, opt.off_mesh, [&](const std::string& w) {
         if(!opt.quiet) std::cerr << "swn: warning: " << w << "\n";
+      });
     input = Mesh();   // the run goes on with the cut's copy: free the input's memory now
     curves.clear();
     t_cut = seconds_since(t0);

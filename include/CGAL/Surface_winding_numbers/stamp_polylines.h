@@ -37,8 +37,10 @@ struct Stamp_frame
 {
   /// the place of the drawing's point (0, 0)
   typename GT::Point_3 origin;
-  /// the drawing's unit vectors
-  typename GT::Vector_3 x_axis, y_axis;
+  /// the drawing's unit vector along its `x` axis
+  typename GT::Vector_3 x_axis;
+  /// the drawing's unit vector along its `y` axis
+  typename GT::Vector_3 y_axis;
   /// the direction of the rays, from the drawing towards the mesh
   typename GT::Vector_3 direction;
 };

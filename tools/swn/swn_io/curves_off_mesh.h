@@ -47,24 +47,25 @@ inline void read_off_mesh_curves(Off_mesh_curves& curves)
 }
 
 /*!
-  \brief puts the curves onto `cut.mesh` (cutting it further) and adds them to `cut.chain`; returns the
-  warnings (the drawing's, and the library's about polylines that gave nothing, each with its file).
+  \brief puts the curves onto `cut.mesh` (cutting it further) and adds them to `cut.chain`; calls `warn`
+  with every warning as it comes (the drawing's, and the library's about polylines that gave nothing, each
+  with its file).
   \throws Input_error when a polyline has a point that is not finite, and when there is no curve at all on
   the surface afterwards (every point too far, every ray missing, and no other curve).
 */
-template <class Point>
-std::vector<std::string> add_off_mesh_curves(Cut_result<Point>& cut, const Off_mesh_curves& curves)
+template <class Point, class Warn>
+void add_off_mesh_curves(Cut_result<Point>& cut, const Off_mesh_curves& curves, const Warn& warn)
 {
   typedef CGAL::Surface_mesh<Point> Mesh;
   typedef typename CGAL::Kernel_traits<Point>::Kernel K;
-  std::vector<std::string> warnings = curves.drawing.warnings;
+  for(const std::string& w : curves.drawing.warnings) warn(w);
   Mesh& mesh = cut.mesh;
   auto chain = mesh.template add_property_map<typename Mesh::Edge_index, int>("e:swn_off_mesh_chain", 0).first;
   for(auto e : mesh.edges()) chain[e] = cut.chain[std::size_t(e)];
   auto put_on_mesh = [&](const std::vector<std::vector<Point> >& polylines, const std::string& file) {
     const auto r = polylines_to_chain(mesh, polylines, chain);
     if(!r) throw Input_error(file, 0, r.error);
-    for(const std::string& w : r.warnings) warnings.push_back(file + ": " + w);
+    for(const std::string& w : r.warnings) warn(file + ": " + w);
   };
   if(!curves.polylines_file.empty())
   {
@@ -91,7 +92,6 @@ std::vector<std::string> add_off_mesh_curves(Cut_result<Point>& cut, const Off_m
   cut.chain.assign(mesh.number_of_edges(), 0);
   for(auto e : mesh.edges()) cut.chain[std::size_t(e)] = chain[e];
   mesh.remove_property_map(chain);
-  return warnings;
 }
 
 } // namespace IO
