@@ -457,6 +457,7 @@ TEST(Malformed, Corpus)
     ls >> file >> expected_line;
     std::getline(ls, substring);
     substring.erase(0, substring.find_first_not_of(' '));
+    substring = substring.substr(0, substring.find("  # soup"));   // the tool's own marker (test_tool)
     listed.insert(file);
     ++cases;
     const std::string path = dir + file;

@@ -1,6 +1,7 @@
 // Polygon soups and polygon meshes (issue 32, part 1 and 4): the soup entry point
 // CGAL::polygon_soup_winding_numbers() and FaceGraphs with faces of more than three sides, on quad and
-// mixed quad/triangle tori with analytic answers, and their errors.
+// mixed quad/triangle tori with analytic answers, and their errors. Nonmanifold and nonorientable soups
+// are in test_oracles_nonmanifold.cpp.
 #include <CGAL/surface_winding_numbers.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/property_map.h>
@@ -8,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "mesh_generators.h"
+#include "test_oracles_soup.h"
 
 #include <array>
 #include <cmath>
@@ -18,74 +20,6 @@
 #include <vector>
 
 namespace {
-namespace SWN = CGAL::Surface_winding_numbers;
-namespace SI = CGAL::Surface_winding_numbers::internal;
-using namespace swn_test;
-typedef std::pair<std::size_t, std::size_t> Pair;
-typedef std::vector<std::vector<std::size_t>> Polygons;
-
-// A torus of nu x nv cells (jittered points of mesh_generators.h); each cell a quad, or two triangles
-// where split(i, j) (alternating diagonals). cell[p] = (i, j) of polygon p.
-struct Polygon_torus
-{
-  int nu, nv;
-  std::vector<Point_3> points;
-  Polygons polygons;
-  std::vector<std::pair<int, int>> cell;
-
-  template <class Split>
-  Polygon_torus(int nu_, int nv_, Split split) : nu(nu_), nv(nv_), points(make_torus(nu_, nv_).points)
-  {
-    for(int j = 0; j < nv; ++j)
-      for(int i = 0; i < nu; ++i)
-      {
-        const std::size_t a = torus_vid(nu, nv, i, j), b = torus_vid(nu, nv, i + 1, j), c = torus_vid(nu, nv, i + 1, j + 1),
-                          d = torus_vid(nu, nv, i, j + 1);
-        if(!split(i, j)) add({a, b, c, d}, i, j);
-        else if((i + j) % 2 == 0) { add({a, b, c}, i, j); add({a, c, d}, i, j); }
-        else { add({a, b, d}, i, j); add({b, c, d}, i, j); }
-      }
-  }
-  void add(std::vector<std::size_t> p, int i, int j) { polygons.push_back(std::move(p)); cell.emplace_back(i, j); }
-};
-
-// the directed edges of a closed loop of vertex indices (with `gap` edges left out from `skip`)
-std::vector<Pair> loop_edges(const std::vector<Index>& loop, std::size_t skip = 0, std::size_t gap = 0)
-{
-  std::vector<Pair> c;
-  for(std::size_t k = 0; k < loop.size(); ++k)
-    if(!(k >= skip && k < skip + gap)) c.emplace_back(loop[k], loop[(k + 1) % loop.size()]);
-  return c;
-}
-
-struct Soup_answer
-{
-  bool ok = false;
-  SWN::Solve_report report;
-  std::vector<int> W;
-  std::map<Pair, int> G, bounding;
-  std::map<Pair, double> w;   // (polygon, corner) -> w
-};
-
-Soup_answer solve_soup(const std::vector<Point_3>& points, const Polygons& polygons, const std::vector<Pair>& curve)
-{
-  Soup_answer a;
-  a.W.assign(polygons.size(), -99);
-  a.ok = CGAL::polygon_soup_winding_numbers(points, polygons, curve, CGAL::make_property_map(a.W),
-           SWN::parameters::nonbounding_chain_map(boost::make_assoc_property_map(a.G),
-           SWN::parameters::bounding_chain_map(boost::make_assoc_property_map(a.bounding),
-           SWN::parameters::winding_number_map(boost::make_assoc_property_map(a.w),
-           SWN::parameters::report(std::ref(a.report))))));
-  return a;
-}
-
-// the value of a chain map on the directed edge a -> b (keys are (min, max), values signed from min to max)
-int along(const std::map<Pair, int>& chain, std::size_t a, std::size_t b)
-{
-  const auto it = chain.find(Pair((std::min)(a, b), (std::max)(a, b)));
-  if(it == chain.end()) return 0;
-  return a < b ? it->second : -it->second;
-}
 
 // every cell with i0 <= i < i1 and j0 <= j < j1 is one higher than every other cell, and the bounding
 // chain is the loop around them
@@ -232,8 +166,10 @@ TEST(PolygonSoup, BadPolygonsAndCurvesAreRejectedWithTheirIndex)
   expect_error(pts, t.polygons, {}, "vertex 5 has a non-finite coordinate");
   // a quad's diagonal is no edge of the soup
   expect_error(t.points, t.polygons, {Pair(t.polygons[0][0], t.polygons[0][2])}, "is not an edge of the polygons");
-  // a polygon glued the wrong way round
-  p = t.polygons;
-  std::reverse(p[4].begin(), p[4].end());
-  expect_error(t.points, p, {}, "nonmanifold or joins faces of opposite orientation");
+  // dual chain pairs must be polygons that share an edge
+  const Soup_answer d = solve_soup(t.points, t.polygons, {}, {Pair(0, 47)});
+  EXPECT_FALSE(d.ok);
+  EXPECT_NE(d.report.error.find("dual chain pair 0 (0, 47): the two polygons share no edge"), std::string::npos)
+    << d.report.error;
+  EXPECT_FALSE(solve_soup(t.points, t.polygons, {}, {Pair(0, 1), Pair(1, 480)}).ok);
 }

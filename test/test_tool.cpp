@@ -1,56 +1,8 @@
 // End-to-end tests of the swn command-line tool: the authors' demo data, the malformed-input
 // corpus (exit code 2, file and line in the message, no output left behind), inputs never modified.
-#include <gtest/gtest.h>
-
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
-#include <map>
-#include <sstream>
-#include <string>
-#include <sys/wait.h>
-#include <vector>
-
 #include "test_tool_support.h"
 
-using namespace swn_tool_test;
-namespace fs = std::filesystem;
-
-namespace {
-
-// Runs a demo case and returns the label histogram; checks every output file exists.
-std::map<int, int> solve_demo(const std::string& args, const std::string& name, std::string* summary = nullptr)
-{
-  const fs::path out = fresh_dir(name);
-  const Tool_run r = run(args + " --quiet --output-dir '" + out.string() + "'");
-  EXPECT_EQ(r.status, 0) << r.err;
-  for(const char* f : {"labels.txt", "mesh.ply", "w.obj", "bounding.obj", "nonbounding.obj", "completed.obj", "summary.json"})
-    EXPECT_TRUE(fs::exists(out / f)) << f;
-  EXPECT_TRUE(r.out.empty()) << "--quiet printed: " << r.out;
-  if(summary) *summary = slurp((out / "summary.json").string());
-  const std::map<int, int> h = histogram(read_labels(out / "labels.txt"));
-  fs::remove_all(out);
-  return h;
-}
-
-int chain_edges_in_obj(const std::string& text)
-{
-  // count the segments of the `l` polylines
-  std::istringstream in(text);
-  std::string line;
-  int segments = 0;
-  while(std::getline(in, line))
-    if(line.rfind("l ", 0) == 0)
-    {
-      std::istringstream ls(line.substr(2));
-      int k, n = 0;
-      while(ls >> k) ++n;
-      segments += n - 1;
-    }
-  return segments;
-}
-
-} // namespace
+#include <algorithm>
 
 TEST(Tool, HelpAndUsageErrors)
 {
@@ -125,6 +77,10 @@ TEST(Tool, MalformedCorpusGivesFileLineAndExitCode2)
     std::string file;
     std::size_t expected_line = 0;
     ls >> file >> expected_line;
+    std::string rest;
+    std::getline(ls, rest);
+    const std::size_t marker = rest.find("  # soup");
+    const std::string message = rest.substr(rest.find_first_not_of(' '), marker == std::string::npos ? std::string::npos : marker - rest.find_first_not_of(' '));
     const std::string path = corpus + file;
     const bool curve_file = file.size() > 4 && file.substr(file.size() - 4) == ".txt";
     const std::string before = slurp(path);
@@ -132,6 +88,14 @@ TEST(Tool, MalformedCorpusGivesFileLineAndExitCode2)
     const Tool_run r = curve_file ? run("'" + std::string(SWN_TEST_DATA_DIR) + "/grid4.off' --curve '" + path +
                                    "' --output-dir '" + out.string() + "'")
                              : run("'" + path + "' --output-dir '" + out.string() + "'");
+    if(marker != std::string::npos)
+    {
+      // not a triangle mesh the library's FaceGraph route takes, but a soup the tool solves: whatever else
+      // it says (these files have no curve), it does not reject them for that
+      EXPECT_EQ(r.err.find(message), std::string::npos) << file << ": " << r.err;
+      fs::remove_all(out);
+      continue;
+    }
     EXPECT_EQ(r.status, 2) << file << ": " << r.err;
     const std::string where = expected_line > 0 ? file + ":" + std::to_string(expected_line) + ":" : file;
     EXPECT_NE(r.err.find(where), std::string::npos) << "expected '" << where << "' in: " << r.err;

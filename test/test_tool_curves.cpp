@@ -11,7 +11,7 @@
 #include <cmath>
 #include <regex>
 
-using namespace swn_tool_test;
+
 
 namespace {
 

@@ -1,4 +1,4 @@
-// Shared by the end-to-end tests of the swn tool (test_tool*.cpp): running the tool, its output files.
+// Helpers of the swn tool's end-to-end tests (test_tool*.cpp): running the tool, reading its outputs.
 #ifndef SWN_TEST_TOOL_SUPPORT_H
 #define SWN_TEST_TOOL_SUPPORT_H
 
@@ -16,12 +16,12 @@
 
 namespace fs = std::filesystem;
 
-namespace swn_tool_test {
+namespace tool_test {
 
-inline const std::string tool = SWN_TOOL_PATH;
-inline const std::string tuned = SWN_TUNED_PATH;
-inline const std::string demo = std::string(SWN_REPO_DATA_DIR) + "/swn-demo/";
-inline const std::string corpus = std::string(SWN_TEST_DATA_DIR) + "/malformed/";
+const std::string tool = SWN_TOOL_PATH;
+const std::string tuned = SWN_TUNED_PATH;
+const std::string demo = std::string(SWN_REPO_DATA_DIR) + "/swn-demo/";
+const std::string corpus = std::string(SWN_TEST_DATA_DIR) + "/malformed/";
 
 struct Tool_run
 {
@@ -77,6 +77,40 @@ inline std::map<int, int> histogram(const std::vector<int>& labels)
   return h;
 }
 
-} // namespace swn_tool_test
+// Runs a demo case and returns the label histogram; checks every output file exists.
+inline std::map<int, int> solve_demo(const std::string& args, const std::string& name, std::string* summary = nullptr)
+{
+  const fs::path out = fresh_dir(name);
+  const Tool_run r = run(args + " --quiet --output-dir '" + out.string() + "'");
+  EXPECT_EQ(r.status, 0) << r.err;
+  for(const char* f : {"labels.txt", "mesh.ply", "w.obj", "bounding.obj", "nonbounding.obj", "completed.obj", "summary.json"})
+    EXPECT_TRUE(fs::exists(out / f)) << f;
+  EXPECT_TRUE(r.out.empty()) << "--quiet printed: " << r.out;
+  if(summary) *summary = slurp((out / "summary.json").string());
+  const std::map<int, int> h = histogram(read_labels(out / "labels.txt"));
+  fs::remove_all(out);
+  return h;
+}
+
+inline int chain_edges_in_obj(const std::string& text)
+{
+  // count the segments of the `l` polylines
+  std::istringstream in(text);
+  std::string line;
+  int segments = 0;
+  while(std::getline(in, line))
+    if(line.rfind("l ", 0) == 0)
+    {
+      std::istringstream ls(line.substr(2));
+      int k, n = 0;
+      while(ls >> k) ++n;
+      segments += n - 1;
+    }
+  return segments;
+}
+
+} // namespace tool_test
+
+using namespace tool_test;
 
 #endif

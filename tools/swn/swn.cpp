@@ -3,13 +3,17 @@
 //   swn MESH [--curve FILE] [--output-dir DIR] [--epsilon X] [--lp-solver NAME]
 //            [--linear-solver NAME] [--quiet] [--verbose]
 //
-// Reads a triangle mesh (OFF, OBJ, PLY, STL; order kept) and curves (inline OBJ `l` lines and/or a
-// curve file), cuts the mesh so that the curves lie on edges, solves, and writes every output of
-// the method to DIR atomically. Exit codes: 0 success, 1 solver or output failure, 2 bad input.
+// Reads a mesh (OFF, OBJ, PLY, STL; order kept) and curves (inline OBJ `l`/`c` lines and/or a curve
+// file). An oriented 2-manifold triangle mesh is cut so that the curves lie on edges and solved as a
+// Surface_mesh; any other file (polygons, nonmanifold, nonorientable) and dual chains are solved as a
+// polygon soup (swn_soup_route.h). Every output of the method is written to DIR atomically.
+// Exit codes: 0 success, 1 solver or output failure, 2 bad input.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/surface_winding_numbers.h>
+#include <CGAL/Surface_winding_numbers/polygon_soup_winding_numbers.h>
+#include <boost/property_map/property_map.hpp>
 #ifdef CGAL_USE_GLPK
 #include <CGAL/Surface_winding_numbers/GLPK_linear_program_traits.h>
 #endif
@@ -20,7 +24,9 @@
 #include "swn_io/json.h"
 #include "swn_io/read_curves.h"
 #include "swn_io/read_mesh.h"
+#include "swn_io/soup_curves.h"
 #include "swn_io/write_outputs.h"
+#include "swn_io/write_soup_outputs.h"
 
 #include <algorithm>
 #include <chrono>
@@ -42,11 +48,15 @@ namespace SIO = CGAL::Surface_winding_numbers::IO;
 static const char* usage =
   "usage: swn MESH [options]\n"
   "\n"
-  "Computes surface winding numbers (Feng, Gillespie, Crane 2023) of curves on a triangle mesh.\n"
+  "Computes surface winding numbers (Feng, Gillespie, Crane 2023) of curves on a surface mesh.\n"
   "\n"
-  "  MESH                   triangle mesh: .off .obj .ply .stl (vertex and face order are kept);\n"
-  "                         `l` polylines in an OBJ file are read as curves (1-based, #offset honoured)\n"
-  "  --curve FILE           curve file: the authors' format (v / e / l / #offset lines), or a file whose\n"
+  "  MESH                   mesh: .off .obj .ply .stl (vertex and face order are kept); `l` polylines and\n"
+  "                         `c` dual chains in an OBJ file are read as curves (1-based, #offset honoured).\n"
+  "                         A file that is not an oriented 2-manifold triangle mesh (polygons, nonmanifold\n"
+  "                         edges or vertices, nonorientable gluings) or curves with dual chains are solved\n"
+  "                         as a polygon soup: outputs on the file's faces, curve edges at nonmanifold\n"
+  "                         vertices left out (warning), curves given by vertices or dual chains only\n"
+  "  --curve FILE           curve file: the authors' format (v / e / l / c / #offset lines), or a file whose\n"
   "                         first line is `# swn polylines` (0-based vertex polylines, one per line) or\n"
   "                         `# swn halfedges` (lines `h SRC DST [multiplicity]`)\n"
   "  --polylines FILE       3D polylines (OBJ `v X Y Z` and 1-based `l` records) drawn off the mesh: each\n"
@@ -203,7 +213,71 @@ std::future<void> start_task(bool sequential, Task task)
   return std::async(std::launch::deferred, task);
 }
 
+
+// Calls run(lp, sparse_solver) with the residual solver and the sparse Cholesky solver chosen on the command
+// line (among the compiled-in ones); returns what run returns.
+template <class Run>
+bool with_solvers(const Options& opt, Run run)
+{
+  auto with_sparse_solver = [&](auto& lp) {
+#ifdef CGAL_SWN_USE_CHOLMOD
+    if(opt.linear_solver == "cholmod") return run(lp, SWN::internal::CHOLMOD_sparse_solver());
+#endif
+    return run(lp, SWN::internal::Eigen_LDLT_sparse_solver());
+  };
+#ifdef CGAL_SWN_USE_LEMON
+  SWN::LEMON_residual_solver::Options lemon_options;
+  if(opt.lp_solver == "lemon-simplex") lemon_options.algorithm = SWN::LEMON_residual_solver::Options::NETWORK_SIMPLEX;
+  SWN::LEMON_residual_solver lemon(lemon_options);
+  if(opt.lp_solver == "lemon" || opt.lp_solver == "lemon-simplex") return with_sparse_solver(lemon);
+#endif
+#ifdef CGAL_USE_GLPK
+  SWN::GLPK_linear_program_traits glpk;
+  if(opt.lp_solver == "glpk") return with_sparse_solver(glpk);
+#endif
+  return false;
+}
+
+typedef std::map<int, std::pair<std::size_t, double> > Histogram;   // label -> (faces, area)
+
+// the parts of summary.json both routes write: the method and the labels
+void json_method_and_labels(SIO::Json& j, const Options& opt, const SWN::Solve_report& report, const Histogram& histogram)
+{
+  j.key("method").begin_object()
+    .key("epsilon").value(opt.epsilon)
+    .key("homology_correction").value(report.homology_correction)
+    .key("hodge_projection").value(report.hodge_projection)
+    .key("lp_ran").value(report.lp_ran).key("reduced_residual").value(report.reduced_residual)
+    .key("lp_variables").value(report.lp_variables).key("lp_rows").value(report.lp_rows)
+    .key("lp_objective").value(report.lp_objective)
+    .key("lp_solver").value(opt.lp_solver).key("linear_solver").value(opt.linear_solver)
+    .end_object();
+  j.key("labels").begin_array();
+  for(const auto& h : histogram)
+    j.begin_object().key("label").value(double(h.first)).key("faces").value(h.second.first)
+      .key("area").value(h.second.second).end_object();
+  j.end_array();
+}
+
+void print_summary(const Options& opt, const SIO::Mesh_read_info& info, const SWN::Solve_report& report,
+                   const Histogram& histogram, std::size_t G_edges, std::size_t bounding_edges, double seconds)
+{
+  if(opt.quiet) return;
+  std::cout << "mesh: " << opt.mesh << ": " << info.number_of_vertices << " vertices, " << info.number_of_faces
+            << " faces; solved on " << report.vertices << " vertices, " << report.faces << " faces, genus "
+            << report.genus << ", " << report.components << " component(s)\n"
+            << "curve: " << report.curve_edges << " edges, " << report.interior_endpoints << " interior endpoints\n"
+            << "labels:";
+  for(const auto& h : histogram) std::cout << "  W=" << h.first << ": " << h.second.first << " faces";
+  std::cout << "\nnonbounding loops G: " << G_edges << " edges; bounding chain: " << bounding_edges << " edges\n"
+            << "residual LP: " << (report.lp_ran ? "solved (" + std::to_string(report.lp_variables) + " variables)" : std::string("not needed"))
+            << "; total " << seconds << " s\n";
+  if(!opt.output_dir.empty()) std::cout << "outputs written to " << opt.output_dir << "/\n";
+}
+
 } // namespace
+
+#include "swn_soup_route.h"
 
 int main(int argc, char** argv)
 {
@@ -224,22 +298,47 @@ int main(int argc, char** argv)
 
   const auto t_start = std::chrono::steady_clock::now();
   Mesh input;
+  SIO::Triangle_soup soup;
   SIO::Mesh_read_info info;
   std::vector<SIO::Curve_set> curves;
   SIO::Cut_result<K::Point_3> cut;
   double t_read = 0, t_cut = 0;
+  std::string not_a_mesh;   // why the input is solved as a polygon soup ("" for oriented 2-manifold triangle meshes)
   try
   {
     auto t0 = std::chrono::steady_clock::now();
-    info = SIO::read_mesh(opt.mesh, input);
+    not_a_mesh = SIO::read_mesh_or_soup(opt.mesh, input, soup, info);
     for(const std::string& w : info.warnings)
       if(!opt.quiet) std::cerr << "swn: warning: " << w << "\n";
-    if(SIO::has_curve_records(info)) curves.push_back(SIO::curve_set_from_obj(info, input));
-    if(!opt.curve.empty()) curves.push_back(SIO::read_curve_file(opt.curve, input));
+    if(not_a_mesh.empty())
+    {
+      if(SIO::has_curve_records(info)) curves.push_back(SIO::curve_set_from_obj(info, input));
+      if(!opt.curve.empty()) curves.push_back(SIO::read_curve_file(opt.curve, input));
+    }
+    else
+    {
+      if(SIO::has_curve_records(info)) curves.push_back(SIO::curve_set_from_obj(info, soup));
+      if(!opt.curve.empty()) curves.push_back(SIO::read_curve_file(opt.curve, soup));
+    }
     SIO::read_off_mesh_curves(opt.off_mesh);
     if(curves.empty() && opt.off_mesh.empty())
       throw SIO::Input_error(opt.mesh, 0, "no curve: give --curve FILE, --polylines FILE, --stamp FILE, or `l` lines in an OBJ mesh");
     t_read = seconds_since(t0);
+    bool dual_chains = false;
+    for(const SIO::Curve_set& c : curves) dual_chains = dual_chains || !c.dual_pairs.empty();
+    if(not_a_mesh.empty() && dual_chains)
+    {
+      const auto edges = SIO::soup_edges(soup);
+      for(const SIO::Curve_set& c : curves) SIO::internal::validate_soup_curve_set(c, soup, edges);
+      not_a_mesh = "the curve has dual chains (c records)";
+    }
+    if(!not_a_mesh.empty() && !opt.off_mesh.empty())
+      throw SIO::Input_error(opt.off_mesh.polylines_file.empty() ? opt.off_mesh.stamp_file : opt.off_mesh.polylines_file, 0,
+                             "curves off the mesh need a triangle mesh to cut, and " + opt.mesh + " is solved as a soup (" +
+                             not_a_mesh + ")");
+    if(!not_a_mesh.empty())
+      return run_on_soup(opt, soup, info, curves, not_a_mesh, t_start, t_read);
+    soup = SIO::Triangle_soup();
     log("read " + std::to_string(num_vertices(input)) + " vertices, " + std::to_string(num_faces(input)) + " faces");
     t0 = std::chrono::steady_clock::now();
     cut = SIO::conforming_cut(input, curves);
@@ -277,7 +376,7 @@ int main(int argc, char** argv)
   auto g = mesh.add_property_map<Mesh::Edge_index, double>("e:g", 0.).first;
   auto B = mesh.add_property_map<Mesh::Edge_index, int>("e:bounding", 0).first;
   SWN::Solve_report report;
-  auto solve = [&](auto& lp, auto sparse_solver) {
+  const bool ok = with_solvers(opt, [&](auto& lp, auto sparse_solver) {
     return CGAL::surface_winding_numbers(
       mesh, chain, labels,
       SWN::parameters::winding_number_map(w, SWN::parameters::nonbounding_chain_map(G,
@@ -287,25 +386,7 @@ int main(int argc, char** argv)
       SWN::parameters::lp_solver(std::ref(lp),
       SWN::parameters::report(std::ref(report))))))))))
         .verbose(opt.verbose).sparse_linear_solver(sparse_solver));
-  };
-  // the LP backend and the sparse solver are chosen at run time among the compiled-in ones
-  auto solve_with = [&](auto& lp) {
-#ifdef CGAL_SWN_USE_CHOLMOD
-    if(opt.linear_solver == "cholmod") return solve(lp, SWN::internal::CHOLMOD_sparse_solver());
-#endif
-    return solve(lp, SWN::internal::Eigen_LDLT_sparse_solver());
-  };
-  bool ok = false;
-#ifdef CGAL_SWN_USE_LEMON
-  SWN::LEMON_residual_solver::Options lemon_options;
-  if(opt.lp_solver == "lemon-simplex") lemon_options.algorithm = SWN::LEMON_residual_solver::Options::NETWORK_SIMPLEX;
-  SWN::LEMON_residual_solver lemon(lemon_options);
-  if(opt.lp_solver == "lemon" || opt.lp_solver == "lemon-simplex") ok = solve_with(lemon);
-#endif
-#ifdef CGAL_USE_GLPK
-  SWN::GLPK_linear_program_traits glpk;
-  if(opt.lp_solver == "glpk") ok = solve_with(glpk);
-#endif
+  });
   if(!ok)
   {
     const bool bad_input = report.invalid_input;
@@ -314,7 +395,7 @@ int main(int argc, char** argv)
   }
 
   // Region statistics
-  std::map<int, std::pair<std::size_t, double>> histogram;
+  Histogram histogram;
   for(auto f : faces(mesh))
   {
     auto h = halfedge(f, mesh);
@@ -370,20 +451,7 @@ int main(int argc, char** argv)
         .key("nonbounding_edges").value(G_edges).key("bounding_edges").value(bounding_edges)
         .key("nonbounding_closing_units").value(report.nonbounding_closing_units)
         .end_object();
-      j.key("method").begin_object()
-        .key("epsilon").value(opt.epsilon)
-        .key("homology_correction").value(report.homology_correction)
-        .key("hodge_projection").value(report.hodge_projection)
-        .key("lp_ran").value(report.lp_ran).key("reduced_residual").value(report.reduced_residual)
-        .key("lp_variables").value(report.lp_variables).key("lp_rows").value(report.lp_rows)
-        .key("lp_objective").value(report.lp_objective)
-        .key("lp_solver").value(opt.lp_solver).key("linear_solver").value(opt.linear_solver)
-        .end_object();
-      j.key("labels").begin_array();
-      for(const auto& h : histogram)
-        j.begin_object().key("label").value(double(h.first)).key("faces").value(h.second.first)
-          .key("area").value(h.second.second).end_object();
-      j.end_array();
+      json_method_and_labels(j, opt, report, histogram);
       j.key("timings_seconds").begin_object()
         .key("read").value(t_read).key("curve_on_edges").value(t_cut).key("mesh_tables").value(report.time_mesh)
         .key("jump_laplace").value(report.time_setup + report.time_jump_laplace)
@@ -403,18 +471,6 @@ int main(int argc, char** argv)
     }
   }
 
-  if(!opt.quiet)
-  {
-    std::cout << "mesh: " << opt.mesh << ": " << info.number_of_vertices << " vertices, " << info.number_of_faces
-              << " faces; solved on " << report.vertices << " vertices, " << report.faces << " faces, genus "
-              << report.genus << ", " << report.components << " component(s)\n"
-              << "curve: " << report.curve_edges << " edges, " << report.interior_endpoints << " interior endpoints\n"
-              << "labels:";
-    for(const auto& h : histogram) std::cout << "  W=" << h.first << ": " << h.second.first << " faces";
-    std::cout << "\nnonbounding loops G: " << G_edges << " edges; bounding chain: " << bounding_edges << " edges\n"
-              << "residual LP: " << (report.lp_ran ? "solved (" + std::to_string(report.lp_variables) + " variables)" : std::string("not needed"))
-              << "; total " << seconds_since(t_start) << " s\n";
-    if(!opt.output_dir.empty()) std::cout << "outputs written to " << opt.output_dir << "/\n";
-  }
+  print_summary(opt, info, report, histogram, G_edges, bounding_edges, seconds_since(t_start));
   return 0;
 }

@@ -53,13 +53,24 @@ struct Solve_report
   std::size_t components = 0;        ///< connected components of the mesh
   std::size_t border_edges = 0;      ///< edges with a single incident face
   std::size_t border_loops = 0;      ///< closed loops of border edges (boundary components)
-  int genus = 0;                     ///< sum of the genera of the components
+  int genus = 0;                     ///< sum of the genera of the components (meaningful on oriented 2-manifolds)
+  std::size_t nonmanifold_vertices = 0; ///< vertices whose faces form more than one fan, or on a nonmanifold edge
+  std::size_t nonmanifold_edges = 0; ///< edges with more than two incident faces
+  /// edges whose two faces traverse them the same way (a nonorientable gluing; curves there are dual
+  /// chains, see \ref SWNNonmanifold)
+  std::size_t nonorientable_edges = 0;
   /// @}
   /// \name Curve
   /// @{
 
   std::size_t curve_edges = 0;       ///< edges with a nonzero chain value
   std::size_t interior_endpoints = 0;///< vertices not on the border where the chain has a boundary
+  /// curve edges dropped because they touch a nonmanifold vertex (paper Sec. 2.2; the gaps are closed
+  /// like any other)
+  std::size_t dropped_curve_edges = 0;
+  /// on a nonorientable surface: vertices where a curve passes through but its normal flips (the curve
+  /// is not orientable there, paper Fig. 9: the labels near it are not meaningful)
+  std::size_t inconsistent_curve_vertices = 0;
   /// @}
   /// \name Steps that ran
   /// @{

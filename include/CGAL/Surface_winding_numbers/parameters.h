@@ -24,6 +24,7 @@ enum report_t { report };
 enum refine_short_pieces_t { refine_short_pieces };
 enum minimum_piece_edges_t { minimum_piece_edges };
 enum projection_tolerance_t { projection_tolerance };
+enum dual_chain_t { dual_chain };
 } // namespace internal_np
 /// \endcond
 
@@ -97,6 +98,7 @@ CGAL_SWN_NAMED_PARAMETER(keep_hodge_factorization_t, keep_hodge_factorization)
 CGAL_SWN_NAMED_PARAMETER(refine_short_pieces_t, refine_short_pieces)
 /// chain pieces with fewer edges than this (default 8) that end at an interior endpoint are refined
 CGAL_SWN_NAMED_PARAMETER(minimum_piece_edges_t, minimum_piece_edges)
+CGAL_SWN_NAMED_PARAMETER(dual_chain_t, dual_chain)
 /// @}
 /// \name Settings of `polylines_to_chain()`
 /// @{

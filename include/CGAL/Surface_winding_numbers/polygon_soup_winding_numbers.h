@@ -32,8 +32,12 @@ namespace CGAL {
 conventions, as read by `CGAL::IO::read_polygon_soup()`), without building a `FaceGraph`.
 
 The polygons are glued along the edges they share (two polygons that both use the vertices `i` and `j`
-as consecutive corners). The surface must be an oriented 2-manifold with or without border: every edge
-shared by exactly two polygons that traverse it in opposite directions. Polygons with more than three
+as consecutive corners), with no other requirement (\ref SWNNonmanifold): an edge may be shared by more
+than two polygons (a nonmanifold edge), polygons may meet at a vertex only (a nonmanifold vertex), and
+two polygons may traverse their common edge the same way (a nonorientable gluing, as on a Möbius strip).
+As in the paper (Sec. 2.2), curve edges at a nonmanifold vertex are dropped (the report counts them in
+`Solve_report::dropped_curve_edges`) and nothing jumps across the edges at such a vertex; the gaps
+this makes are closed like any other. Polygons with more than three
 corners are triangulated internally (a quadrilateral along its shorter diagonal, a larger polygon by
 ear clipping in the plane of its Newell normal); no curve runs along the diagonals and the residual
 function may not jump across them, so that the labels are constant on each polygon and every output
@@ -53,10 +57,17 @@ lives on the input's polygons, corners and edges.
 
 \param points the vertices
 \param polygons the faces, each a sequence of at least three distinct vertex indices
-\param curve the input curves, as directed edges of the soup (each must join consecutive corners of a polygon)
+\param curve the input curves, as directed edges of the soup (each must join consecutive corners of a
+       polygon): the polygon to the left of the edge (the one that traverses it in the same direction) gets
+       the higher winding number. On an edge whose two polygons traverse it the same way, that is the polygon
+       that comes first in `polygons`; on a nonorientable surface, curves are better given as the named
+       parameter `dual_chain`.
 \param labels receives W for every polygon
 \param np an optional sequence of named parameters: those of `CGAL::surface_winding_numbers()` (`epsilon`,
-       `lp_solver`, `use_reduced_residual`, `concurrency`, `report`, `verbose`, `sparse_linear_solver`), with
+       `lp_solver`, `use_reduced_residual`, `concurrency`, `report`, `verbose`, `sparse_linear_solver`), and
+       `dual_chain`: a range of pairs `(a, b)` of polygon indices (as `std::pair` or `std::array`), each
+       adding a jump of +1 from polygon `a` into polygon `b` across the edge they share (paper Sec. 3.7, the
+       input of choice on nonorientable surfaces), added to `curve`; with
        the output maps keyed as follows: `nonbounding_chain_map`, `nonbounding_chain_real_map` and
        `bounding_chain_map` have the key `std::pair<std::size_t, std::size_t>` (the two vertices `(i, j)` of
        an edge, `i < j`; the value is signed from `i` to `j`) and are written for every edge;
@@ -64,8 +75,8 @@ lives on the input's polygons, corners and edges.
        of a corner in it) and receives w at that corner.
 
 \returns `true` on success. On failure (bad indices, polygons with fewer than three vertices or a repeated
-vertex, non-finite coordinates, a degenerate triangle, an edge shared by more than two polygons or by two
-polygons traversing it the same way, a curve edge that is not an edge of the soup, a failed solve), no
+vertex, non-finite coordinates, a degenerate triangle, a curve edge that is not an edge of the soup, a pair
+of `dual_chain` that are not polygons sharing an edge, a curve along the border, a failed solve), no
 output map is written and the named parameter `report` tells why, naming the polygon, edge or vertex.
 
 \sa `CGAL::surface_winding_numbers()`
@@ -109,6 +120,8 @@ bool polygon_soup_winding_numbers(const PointRange& points, const PolygonRange& 
                                  ") is not an edge of the polygons");
       chain[it->second] += m.ev[2 * it->second] == a ? 1. : -1.;
     }
+    if constexpr(!parameters::is_default_parameter<NamedParameters, snp::dual_chain_t>::value)
+      SI::add_dual_chain(m, parameters::get_parameter(np, snp::dual_chain), chain);
     const SI::Core_result r = SI::solve_with_parameters(core, chain, np, rep);
     rep.time_mesh = time_mesh;
     typedef typename boost::property_traits<LabelMap>::value_type Label;

@@ -92,20 +92,50 @@ struct Triangle_soup
   std::vector<std::size_t> point_lines;
   /// the three 0-based vertex indices of each triangle, in file order
   std::vector<std::array<std::size_t, 3> > triangles;
-  /// 1-based line of each triangle (0 for binary data)
+  /// 1-based line of each face (0 for binary data)
   std::vector<std::size_t> triangle_lines;
+  /// every face, in file order, once a face with more than three vertices has been met (`add_face()`);
+  /// `triangles` is then empty. Empty for triangle meshes.
+  std::vector<std::vector<std::size_t> > polygons;
 };
+
+/*!
+  \brief the number of faces of `soup` (triangles, or polygons when it has any).
+*/
+inline std::size_t number_of_faces(const Triangle_soup& soup)
+{
+  return soup.polygons.empty() ? soup.triangles.size() : soup.polygons.size();
+}
+
+/*!
+  \brief appends a face (at least three vertex indices, checked by the reader) read on `line`: to `triangles`
+  while every face is a triangle, else to `polygons`, which then takes over the triangles read so far.
+*/
+inline void add_face(Triangle_soup& soup, const std::vector<std::size_t>& face, std::size_t line)
+{
+  if(face.size() == 3 && soup.polygons.empty())
+    soup.triangles.push_back({face[0], face[1], face[2]});
+  else
+  {
+    if(soup.polygons.empty())
+    {
+      soup.polygons.reserve(soup.triangles.size() + 1);
+      for(const auto& t : soup.triangles) soup.polygons.push_back({t[0], t[1], t[2]});
+      soup.triangles.clear();
+      soup.triangles.shrink_to_fit();
+    }
+    soup.polygons.push_back(face);
+  }
+  soup.triangle_lines.push_back(line);
+}
 
 
 namespace internal {
 
 inline std::string face_arity_message(std::size_t face, std::size_t n)
 {
-  if(n < 3)
-    return "face " + std::to_string(face) + " has " + std::to_string(n) +
-           (n == 1 ? " vertex" : " vertices") + " (a face needs at least 3)";
-  return "face " + std::to_string(face) + " has " + std::to_string(n) +
-         " vertices: only triangle meshes are supported";
+  return "face " + std::to_string(face) + " has " + std::to_string(n) + (n == 1 ? " vertex" : " vertices") +
+         " (a face needs at least 3)";
 }
 
 inline void check_finite_point(const std::array<double, 3>& p, const std::string& file, std::size_t line,
@@ -127,7 +157,7 @@ inline std::string read_whole_stream(std::istream& is)
 }
 
 // A soup read by one of CGAL's readers (binary data: no lines): its points, checked finite, and its
-// polygons, which must be triangles.
+// polygons (at least three vertices each).
 template <class Point, class Polygon>
 void soup_from_points_and_polygons(const std::vector<Point>& points, const std::vector<Polygon>& polygons,
                                    const std::string& file, Triangle_soup& soup)
@@ -141,10 +171,9 @@ void soup_from_points_and_polygons(const std::vector<Point>& points, const std::
   }
   for(const Polygon& polygon : polygons)
   {
-    if(polygon.size() != 3)
-      throw Input_error(file, 0, face_arity_message(soup.triangles.size(), polygon.size()));
-    soup.triangles.push_back({polygon[0], polygon[1], polygon[2]});
-    soup.triangle_lines.push_back(0);
+    if(polygon.size() < 3)
+      throw Input_error(file, 0, face_arity_message(number_of_faces(soup), polygon.size()));
+    add_face(soup, std::vector<std::size_t>(polygon.begin(), polygon.end()), 0);
   }
 }
 
@@ -158,33 +187,49 @@ inline std::string edge_name(std::size_t a, std::size_t b)
 // a corner without twin: its halfedge is on the border (check_triangle_soup())
 constexpr std::uint32_t no_twin = (std::numeric_limits<std::uint32_t>::max)();
 
-/// Validates a triangle soup: index range, repeated vertices, non-empty, oriented 2-manifold. Fills the
-/// statistics of `info`. Throws `Input_error` on the first problem, scanning faces in order.
-/// `twin[3 f + k]` gets the corner whose halfedge runs along that of corner k of face f (from its vertex
-/// k to vertex k + 1) the other way, or `no_twin` on a border (for triangle_soup_to_mesh()).
-inline void check_triangle_soup(const Triangle_soup& soup, const std::string& file, Mesh_read_info& info,
-                                std::vector<std::uint32_t>& twin)
+/// Checks the faces of a soup (triangles or polygons): not empty, not too large, indices in range, no
+/// repeated vertex in a face. Throws `Input_error` on the first problem, with the face's line.
+inline void check_soup_faces(const Triangle_soup& soup, const std::string& file)
 {
-  const std::size_t nv = soup.points.size(), nf = soup.triangles.size();
+  const std::size_t nv = soup.points.size(), nf = number_of_faces(soup);
   auto fline = [&](std::size_t f) { return f < soup.triangle_lines.size() ? soup.triangle_lines[f] : 0; };
-  auto vline = [&](std::size_t v) { return v < soup.point_lines.size() ? soup.point_lines[v] : 0; };
   if(nf == 0)
     throw Input_error(file, 0, nv == 0 ? "empty mesh (no vertices and no faces)" : "the mesh has no faces");
   if(nv >= (std::size_t(1) << 32) || nf >= (std::size_t(1) << 30))
     throw Input_error(file, 0, "mesh too large");
-
+  std::vector<std::size_t> sorted;
   for(std::size_t f = 0; f < nf; ++f)
   {
-    const auto& t = soup.triangles[f];
-    for(int k = 0; k < 3; ++k)
-      if(t[k] >= nv)
-        throw Input_error(file, fline(f), "face " + std::to_string(f) + " refers to vertex " + std::to_string(t[k]) +
+    if(soup.polygons.empty()) sorted.assign(soup.triangles[f].begin(), soup.triangles[f].end());
+    else sorted = soup.polygons[f];
+    for(std::size_t v : sorted)
+      if(v >= nv)
+        throw Input_error(file, fline(f), "face " + std::to_string(f) + " refers to vertex " + std::to_string(v) +
                                               " (0-based) but there are only " + std::to_string(nv) + " vertices");
-    if(t[0] == t[1] || t[1] == t[2] || t[2] == t[0])
-      throw Input_error(file, fline(f), "face " + std::to_string(f) + " has a repeated vertex (" + std::to_string(t[0]) +
-                                            ", " + std::to_string(t[1]) + ", " + std::to_string(t[2]) + ")");
+    std::sort(sorted.begin(), sorted.end());
+    const auto rep = std::adjacent_find(sorted.begin(), sorted.end());
+    if(rep != sorted.end())
+      throw Input_error(file, fline(f), "face " + std::to_string(f) + " has a repeated vertex (" + std::to_string(*rep) + ")");
   }
+}
 
+/// Tells whether a triangle soup with checked faces is an oriented 2-manifold: returns "" if it is, else what
+/// is wrong (the first problem in file order) and its line in `line`. `twin[3 f + k]` gets the corner whose
+/// halfedge runs along that of corner k of face f (from its vertex k to vertex k + 1) the other way, or
+/// `no_twin` on a border (for build_oriented_mesh()). Polygon soups are not triangle meshes: "faces with N
+/// vertices".
+inline std::string oriented_manifold_problem(const Triangle_soup& soup, std::vector<std::uint32_t>& twin, std::size_t& line)
+{
+  const std::size_t nv = soup.points.size(), nf = soup.triangles.size();
+  auto fline = [&](std::size_t f) { return f < soup.triangle_lines.size() ? soup.triangle_lines[f] : 0; };
+  auto vline = [&](std::size_t v) { return v < soup.point_lines.size() ? soup.point_lines[v] : 0; };
+  line = 0;
+  for(std::size_t f = 0; f < soup.polygons.size(); ++f)
+    if(soup.polygons[f].size() != 3)
+    {
+      line = fline(f);
+      return "face " + std::to_string(f) + " has " + std::to_string(soup.polygons[f].size()) + " vertices";
+    }
   // outgoing halfedges per vertex (CSR, in face order): (target, face)
   std::vector<std::uint32_t> start(nv + 1, 0);
   for(const auto& t : soup.triangles)
@@ -217,18 +262,16 @@ inline void check_triangle_soup(const Triangle_soup& soup, const std::string& fi
         if(out[i].first == b) { same = out[i].second; break; }
       for(std::uint32_t i = start[b]; i < start[b + 1] && out[i].second < f; ++i)
         if(out[i].first == a) { if(opp1 == nf) opp1 = out[i].second; else { opp2 = out[i].second; break; } }
+      line = fline(f);
       if(opp2 != nf || (same != nf && opp1 != nf))
       {
         std::size_t f0 = std::min(same, opp1), f1 = (opp2 != nf) ? opp2 : std::max(same, opp1);
-        throw Input_error(file, fline(f), "non-manifold edge " + edge_name(std::min(a, b), std::max(a, b)) +
-                                              ": shared by more than two faces (faces " + std::to_string(f0) + ", " +
-                                              std::to_string(f1) + " and " + std::to_string(f) + ")");
+        return "non-manifold edge " + edge_name(std::min(a, b), std::max(a, b)) + ": shared by more than two faces (faces " +
+               std::to_string(f0) + ", " + std::to_string(f1) + " and " + std::to_string(f) + ")";
       }
       if(same != nf)
-        throw Input_error(file, fline(f), "faces " + std::to_string(same) + " and " + std::to_string(f) +
-                                              " both traverse edge " + edge_name(a, b) +
-                                              " in the same direction: the surface is not consistently oriented "
-                                              "(or not orientable)");
+        return "faces " + std::to_string(same) + " and " + std::to_string(f) + " both traverse edge " + edge_name(a, b) +
+               " in the same direction: the surface is not consistently oriented (or not orientable)";
       if(opp1 != nf)
       {
         const std::size_t at_b = local(opp1, b);   // opp1's corner at b, whose halfedge runs b -> a
@@ -239,7 +282,6 @@ inline void check_triangle_soup(const Triangle_soup& soup, const std::string& fi
       }
     }
   }
-
   const std::size_t none = std::size_t(-1);
   std::vector<std::size_t> root(nv, none);
   for(std::size_t f = 0; f < nf; ++f)
@@ -249,17 +291,46 @@ inline void check_triangle_soup(const Triangle_soup& soup, const std::string& fi
       std::size_t r = uf.find(3 * f + k);
       if(root[v] == none) root[v] = r;
       else if(root[v] != r)
-        throw Input_error(file, vline(v), "non-manifold vertex " + std::to_string(v) +
-                                              ": the faces around it form several separate fans (faces " +
-                                              std::to_string(root[v] / 3) + " and " + std::to_string(f) + ")");
+      {
+        line = vline(v);
+        return "non-manifold vertex " + std::to_string(v) + ": the faces around it form several separate fans (faces " +
+               std::to_string(root[v] / 3) + " and " + std::to_string(f) + ")";
+      }
     }
+  line = 0;
+  return std::string();
+}
 
-  // statistics
+/// Fills the statistics of `info` (vertex and face counts, unreferenced vertices, duplicated positions,
+/// zero-area faces) and its warnings.
+inline void soup_statistics(const Triangle_soup& soup, Mesh_read_info& info)
+{
+  const std::size_t nv = soup.points.size(), nf = number_of_faces(soup);
   info.number_of_vertices = nv;
   info.number_of_faces = nf;
+  std::vector<char> used(nv, 0);
+  auto face = [&](std::size_t f) {
+    return soup.polygons.empty() ? std::vector<std::size_t>(soup.triangles[f].begin(), soup.triangles[f].end())
+                                 : soup.polygons[f];
+  };
+  std::size_t degenerate = 0;
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    const std::vector<std::size_t> c = face(f);
+    double n[3] = {0, 0, 0};   // Newell's normal: zero iff the polygon has zero area
+    for(std::size_t k = 0; k < c.size(); ++k)
+    {
+      used[c[k]] = 1;
+      const auto &p = soup.points[c[k]], &q = soup.points[c[(k + 1) % c.size()]];
+      n[0] += (p[1] - q[1]) * (p[2] + q[2]);
+      n[1] += (p[2] - q[2]) * (p[0] + q[0]);
+      n[2] += (p[0] - q[0]) * (p[1] + q[1]);
+    }
+    if(n[0] == 0 && n[1] == 0 && n[2] == 0) ++degenerate;
+  }
   std::vector<std::size_t> unref;
   for(std::size_t v = 0; v < nv; ++v)
-    if(root[v] == none) unref.push_back(v);
+    if(!used[v]) unref.push_back(v);
   info.unreferenced_vertices = unref.size();
   if(!unref.empty())
   {
@@ -284,39 +355,37 @@ inline void check_triangle_soup(const Triangle_soup& soup, const std::string& fi
     info.warnings.push_back(std::to_string(dup) + " vertices have exactly the same position as another vertex (e.g. " +
                             std::to_string(std::min(dup_a, dup_b)) + " and " + std::to_string(std::max(dup_a, dup_b)) +
                             "); kept as distinct vertices");
-  std::size_t degenerate = 0;
-  for(const auto& t : soup.triangles)
-  {
-    const auto &p = soup.points[t[0]], &q = soup.points[t[1]], &r = soup.points[t[2]];
-    double u[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]}, w[3] = {r[0] - p[0], r[1] - p[1], r[2] - p[2]};
-    double c0 = u[1] * w[2] - u[2] * w[1], c1 = u[2] * w[0] - u[0] * w[2], c2 = u[0] * w[1] - u[1] * w[0];
-    if(c0 == 0 && c1 == 0 && c2 == 0) ++degenerate;
-  }
   info.degenerate_faces = degenerate;
   if(degenerate > 0)
     info.warnings.push_back(std::to_string(degenerate) + " faces have zero area (collinear corners); kept");
 }
 
+/// Validates a triangle soup as an oriented 2-manifold (check_soup_faces(), oriented_manifold_problem()) and
+/// fills the statistics of `info`. Throws `Input_error` on the first problem.
+inline void check_triangle_soup(const Triangle_soup& soup, const std::string& file, Mesh_read_info& info,
+                                std::vector<std::uint32_t>& twin)
+{
+  check_soup_faces(soup, file);
+  std::size_t line = 0;
+  const std::string problem = oriented_manifold_problem(soup, twin, line);
+  if(!problem.empty())
+    throw Input_error(file, line, soup.polygons.empty() ? problem : problem + ": only triangle meshes are supported here");
+  soup_statistics(soup, info);
+}
 
 } // namespace internal
 
 /*!
-  \brief builds `mesh` from a validated triangle soup, keeping the vertex and face numbering, with
-  `halfedge(f, mesh)` pointing to the first vertex of each face.
-
-  The soup is validated first (see the file documentation); `mesh` is cleared.
-  \throws Input_error on invalid input, with the line of the offending face or vertex when known.
+  \brief builds `mesh` from a triangle soup that `internal::oriented_manifold_problem()` accepted, with the
+  `twin` table it filled; same numbering as `triangle_soup_to_mesh()`.
 */
 template <class Point>
-void triangle_soup_to_mesh(const Triangle_soup& soup, CGAL::Surface_mesh<Point>& mesh, Mesh_read_info& info,
-                           const std::string& file)
+void build_oriented_mesh(const Triangle_soup& soup, const std::vector<std::uint32_t>& twin, CGAL::Surface_mesh<Point>& mesh)
 {
   typedef CGAL::Surface_mesh<Point> Mesh;
   typedef typename Mesh::Vertex_index Vertex_index;
   typedef typename Mesh::Halfedge_index Halfedge_index;
   typedef typename Mesh::size_type size_type;
-  std::vector<std::uint32_t> twin;
-  internal::check_triangle_soup(soup, file, info, twin);
   // The soup is a valid oriented 2-manifold (with border), so the halfedge structure is wired directly
   // (CGAL::Euler::add_face() searches and checks every edge again: half of the reading time at 1M
   // faces). Edges are created in the order Euler::add_face() creates them, face by face, the face's
@@ -362,6 +431,22 @@ void triangle_soup_to_mesh(const Triangle_soup& soup, CGAL::Surface_mesh<Point>&
       mesh.set_next(g, border_out[std::size_t(a)]);
       mesh.set_halfedge(a, g);
     }
+}
+
+/*!
+  \brief builds `mesh` from a validated triangle soup, keeping the vertex and face numbering, with
+  `halfedge(f, mesh)` pointing to the first vertex of each face.
+
+  The soup is validated first (see the file documentation); `mesh` is cleared.
+  \throws Input_error on invalid input, with the line of the offending face or vertex when known.
+*/
+template <class Point>
+void triangle_soup_to_mesh(const Triangle_soup& soup, CGAL::Surface_mesh<Point>& mesh, Mesh_read_info& info,
+                           const std::string& file)
+{
+  std::vector<std::uint32_t> twin;
+  internal::check_triangle_soup(soup, file, info, twin);
+  build_oriented_mesh(soup, twin, mesh);
 }
 
 } // namespace IO

@@ -176,9 +176,12 @@ inline Curve_file_format detect_format_from_first_line(const std::string& first)
   return Curve_file_format::AUTHORS;
 }
 
-template <class Point>
-Curve_set read_authors_curves(std::istream& is, const std::string& file, const CGAL::Surface_mesh<Point>& mesh,
-                              const std::vector<typename CGAL::Surface_mesh<Point>::Halfedge_index>& ae)
+// The authors' format over nv vertices and nf faces; edge points refer to n_edges edges of the authors'
+// numbering, and edge_end(e, k) is the vertex first(e) (k = 0) or second(e) (k = 1). Without edges (a
+// polygon soup) edge points are an error.
+template <class EdgeEnd>
+Curve_set read_authors_curves(std::istream& is, const std::string& file, std::size_t nv, std::size_t nf,
+                              std::size_t n_edges, EdgeEnd edge_end)
 {
   Curve_set cs;
   cs.file = file;
@@ -188,7 +191,6 @@ Curve_set read_authors_curves(std::istream& is, const std::string& file, const C
   long long offset = -1;
   struct Pending { std::vector<std::size_t> nodes; std::size_t line; };
   std::vector<Pending> pending;
-  const std::size_t nv = mesh.number_of_vertices(), nf = mesh.number_of_faces();
 
   while(next_record(lr, line, tok, offset))
   {
@@ -209,8 +211,11 @@ Curve_set read_authors_curves(std::istream& is, const std::string& file, const C
       if(tok.size() < 3) lr.fail("'e' record needs an edge index and a parameter t");
       if(tok.size() > 3) lr.fail("trailing junk " + quote(tok[3]) + " after the edge parameter");
       std::size_t e = add_offset(int_token(tok[1], lr), offset, lr, "edge");
-      if(e >= ae.size())
-        lr.fail("edge index " + std::to_string(e) + " (0-based) is out of range (" + std::to_string(ae.size()) + " edges)");
+      if(n_edges == 0)
+        lr.fail("edge points ('e' records) need a triangle mesh that is an oriented 2-manifold (this mesh is read as "
+                "a polygon soup): give the curve by vertices");
+      if(e >= n_edges)
+        lr.fail("edge index " + std::to_string(e) + " (0-based) is out of range (" + std::to_string(n_edges) + " edges)");
       double t;
       if(!parse_double(tok[2], t))
         lr.fail("cannot parse the edge parameter " + quote(tok[2]));
@@ -221,7 +226,7 @@ Curve_set read_authors_curves(std::istream& is, const std::string& file, const C
       if(t == 0. || t == 1.)
       {
         p.kind = Curve_point::VERTEX;
-        p.element = std::size_t(t == 0. ? mesh.source(ae[e]) : mesh.target(ae[e]));
+        p.element = edge_end(e, t == 0. ? 0 : 1);
       }
       else
       {
@@ -313,10 +318,9 @@ Curve_set read_vertex_records(std::istream& is, const std::string& file, std::si
   return cs;
 }
 
-template <class Point>
-Curve_set read_polyline_curves(std::istream& is, const std::string& file, const CGAL::Surface_mesh<Point>& mesh)
+inline Curve_set read_polyline_curves(std::istream& is, const std::string& file, std::size_t nv)
 {
-  return read_vertex_records(is, file, mesh.number_of_vertices(),
+  return read_vertex_records(is, file, nv,
                              [](const std::vector<std::string_view>& tok, const Line_reader& lr, Curve_set& cs, auto& vertex) {
     if(tok.size() < 2)
       lr.fail("a polyline needs at least two vertex indices");
@@ -330,11 +334,11 @@ Curve_set read_polyline_curves(std::istream& is, const std::string& file, const 
   });
 }
 
-template <class Point>
-Curve_set read_halfedge_curves(std::istream& is, const std::string& file, const CGAL::Surface_mesh<Point>& mesh)
+// is_edge(s, t): are the vertices s != t joined by an edge
+template <class IsEdge>
+Curve_set read_halfedge_curves(std::istream& is, const std::string& file, std::size_t nv, IsEdge is_edge)
 {
-  typedef CGAL::Surface_mesh<Point> Mesh;
-  return read_vertex_records(is, file, mesh.number_of_vertices(),
+  return read_vertex_records(is, file, nv,
                              [&](const std::vector<std::string_view>& tok, const Line_reader& lr, Curve_set& cs, auto& vertex) {
     if(tok[0] != "h")
       lr.fail("unknown record " + quote(tok[0]) + " (expected 'h SRC DST [MULTIPLICITY]')");
@@ -347,12 +351,42 @@ Curve_set read_halfedge_curves(std::istream& is, const std::string& file, const 
       lr.fail("multiplicity " + std::to_string(m) + " is not in [1, 1000]");
     const std::size_t a = vertex(tok[1]), b = vertex(tok[2]);
     const std::size_t s = cs.points[a].element, t = cs.points[b].element;
-    typename Mesh::Vertex_index vs(static_cast<typename Mesh::size_type>(s)), vt(static_cast<typename Mesh::size_type>(t));
-    if(s == t || !CGAL::halfedge(vs, vt, mesh).second)
+    if(s == t || !is_edge(s, t))
       lr.fail("halfedge " + std::to_string(s) + " -> " + std::to_string(t) + " is not an edge of the mesh");
     for(long long k = 0; k < m; ++k)
       cs.segments.push_back(Curve_segment{a, b, lr.line_number()});
   });
+}
+
+// The `l` and `c` records of an OBJ file as a Curve_set, unchecked.
+inline Curve_set obj_curve_records(const Mesh_read_info& info)
+{
+  Curve_set cs;
+  cs.file = info.file;
+  std::map<std::size_t, std::size_t> index;
+  for(const Obj_polyline& pl : info.obj_polylines)
+    for(std::size_t k = 0; k < pl.vertices.size(); ++k)
+    {
+      std::size_t pt = vertex_point(cs, index, pl.vertices[k], pl.line);
+      if(k > 0)
+        cs.segments.push_back(Curve_segment{vertex_point(cs, index, pl.vertices[k - 1], pl.line), pt, pl.line});
+    }
+  for(const Obj_dual_chain& dc : info.obj_dual_chains)
+    for(std::size_t k = 0; k + 1 < dc.faces.size(); ++k)
+      cs.dual_pairs.push_back(Curve_dual_pair{dc.faces[k], dc.faces[k + 1], dc.line});
+  return cs;
+}
+
+// Reads the whole stream, sets `format` from its first line and returns the text to read it from.
+inline std::istringstream detect_curve_format(std::istream& is, const std::string& file, Curve_file_format& format)
+{
+  std::string all((std::istreambuf_iterator<char>(is)), std::istreambuf_iterator<char>());
+  if(is.bad()) throw Input_error(file, 0, "read error");
+  std::string first = all.substr(0, all.find('\n'));
+  if(!first.empty() && first.back() == '\r') first.pop_back();
+  if(first.size() >= 3 && first.compare(0, 3, "\xEF\xBB\xBF") == 0) first.erase(0, 3);
+  format = detect_format_from_first_line(first);
+  return std::istringstream(std::move(all));
 }
 
 } // namespace internal
@@ -372,23 +406,25 @@ template <class Point>
 Curve_set read_curves(std::istream& is, const std::string& file, const CGAL::Surface_mesh<Point>& mesh,
                       Curve_file_format format = Curve_file_format::AUTO)
 {
+  typedef CGAL::Surface_mesh<Point> Mesh;
   auto ae = authors_edge_halfedges(mesh);
   if(format == Curve_file_format::AUTO)
   {
-    // peek at the first line, then rewind by re-reading from a buffer
-    std::string all((std::istreambuf_iterator<char>(is)), std::istreambuf_iterator<char>());
-    if(is.bad()) throw Input_error(file, 0, "read error");
-    std::string first = all.substr(0, all.find('\n'));
-    if(!first.empty() && first.back() == '\r') first.pop_back();
-    if(first.size() >= 3 && first.compare(0, 3, "\xEF\xBB\xBF") == 0) first.erase(0, 3);
-    format = internal::detect_format_from_first_line(first);
-    std::istringstream ss(std::move(all));
+    std::istringstream ss = internal::detect_curve_format(is, file, format);
     return read_curves(ss, file, mesh, format);
   }
+  const std::size_t nv = mesh.number_of_vertices();
   Curve_set cs;
-  if(format == Curve_file_format::POLYLINES) cs = internal::read_polyline_curves(is, file, mesh);
-  else if(format == Curve_file_format::HALFEDGES) cs = internal::read_halfedge_curves(is, file, mesh);
-  else cs = internal::read_authors_curves(is, file, mesh, ae);
+  if(format == Curve_file_format::POLYLINES) cs = internal::read_polyline_curves(is, file, nv);
+  else if(format == Curve_file_format::HALFEDGES)
+    cs = internal::read_halfedge_curves(is, file, nv, [&](std::size_t s, std::size_t t) {
+      return CGAL::halfedge(typename Mesh::Vertex_index(static_cast<typename Mesh::size_type>(s)),
+                            typename Mesh::Vertex_index(static_cast<typename Mesh::size_type>(t)), mesh).second;
+    });
+  else
+    cs = internal::read_authors_curves(is, file, nv, mesh.number_of_faces(), ae.size(), [&](std::size_t e, int k) {
+      return std::size_t(k == 0 ? mesh.source(ae[e]) : mesh.target(ae[e]));
+    });
   internal::validate_curve_set(cs, mesh, ae);
   return cs;
 }
@@ -418,19 +454,7 @@ Curve_set read_curve_file(const std::string& filename, const CGAL::Surface_mesh<
 template <class Point>
 Curve_set curve_set_from_obj(const Mesh_read_info& info, const CGAL::Surface_mesh<Point>& mesh)
 {
-  Curve_set cs;
-  cs.file = info.file;
-  std::map<std::size_t, std::size_t> index;
-  for(const Obj_polyline& pl : info.obj_polylines)
-    for(std::size_t k = 0; k < pl.vertices.size(); ++k)
-    {
-      std::size_t pt = internal::vertex_point(cs, index, pl.vertices[k], pl.line);
-      if(k > 0)
-        cs.segments.push_back(Curve_segment{internal::vertex_point(cs, index, pl.vertices[k - 1], pl.line), pt, pl.line});
-    }
-  for(const Obj_dual_chain& dc : info.obj_dual_chains)
-    for(std::size_t k = 0; k + 1 < dc.faces.size(); ++k)
-      cs.dual_pairs.push_back(Curve_dual_pair{dc.faces[k], dc.faces[k + 1], dc.line});
+  Curve_set cs = internal::obj_curve_records(info);
   if(cs.segments.empty() && cs.dual_pairs.empty())
     return cs;
   internal::validate_curve_set(cs, mesh, authors_edge_halfedges(mesh));

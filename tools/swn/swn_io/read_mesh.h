@@ -121,6 +121,41 @@ Mesh_read_info read_mesh(const std::string& filename, CGAL::Surface_mesh<Point>&
 }
 
 
+/*!
+  \brief reads a mesh file (as `read_mesh()`) into `mesh` when it is an oriented 2-manifold triangle mesh, and
+  otherwise keeps it as a soup: polygons with more than three vertices, edges shared by more than two faces,
+  vertices where several fans meet, faces traversing an edge the same way.
+
+  `soup` keeps the faces either way (free it when it is no longer needed).
+  \returns "" when `mesh` was built, else why the file is not an oriented 2-manifold
+  triangle mesh (the first problem in file order, as `read_mesh()` would report it); `mesh` is then empty and
+  `soup` holds the checked faces. `info` gets the statistics, warnings and OBJ curve records either way.
+  \throws Input_error on a missing file or invalid input (indices out of range, repeated vertices, faces with
+  fewer than three vertices, non-finite coordinates, no face)
+*/
+template <class Point>
+std::string read_mesh_or_soup(const std::string& filename, CGAL::Surface_mesh<Point>& mesh, Triangle_soup& soup,
+                              Mesh_read_info& info)
+{
+  std::ifstream is = internal::open_input_file(filename, "a mesh file");
+  const std::string fmt = mesh_file_format(filename);
+  if(fmt != "obj" && fmt != "off" && fmt != "ply" && fmt != "stl")
+    throw Input_error(filename, 0, "unknown mesh file extension " + internal::quote(fmt) + " (use .obj, .off, .ply or .stl)");
+  info = Mesh_read_info();
+  soup = Triangle_soup();
+  mesh.clear();
+  read_triangle_soup(is, fmt, filename, soup, info);
+  internal::check_soup_faces(soup, filename);
+  std::vector<std::uint32_t> twin;
+  std::size_t line = 0;
+  std::string problem = internal::oriented_manifold_problem(soup, twin, line);
+  internal::soup_statistics(soup, info);
+  if(!problem.empty())
+    return line > 0 ? filename + ":" + std::to_string(line) + ": " + problem : problem;
+  build_oriented_mesh(soup, twin, mesh);
+  return problem;
+}
+
 } // namespace IO
 } // namespace Surface_winding_numbers
 } // namespace CGAL

@@ -70,6 +70,7 @@ inline void read_OBJ_soup(std::istream& is, const std::string& file, Triangle_so
   struct Pending { std::vector<long long> idx; std::size_t line; };
   std::vector<Pending> polylines, chains;
 
+  std::vector<std::size_t> t;   // the current face's vertices (reused)
   while(next_record(lr, line, tok, offset))
   {
     std::string_view kw = tok[0];
@@ -85,10 +86,10 @@ inline void read_OBJ_soup(std::istream& is, const std::string& file, Triangle_so
     else if(kw == "f")
     {
       std::size_t n = tok.size() - 1;
-      if(n != 3)
-        lr.fail(face_arity_message(soup.triangles.size(), n));
-      std::array<std::size_t, 3> t;
-      for(std::size_t k = 0; k < 3; ++k)
+      if(n < 3)
+        lr.fail(face_arity_message(number_of_faces(soup), n));
+      t.resize(n);
+      for(std::size_t k = 0; k < n; ++k)
       {
         long long i;
         if(!obj_index_token(tok[k + 1], i))
@@ -101,8 +102,7 @@ inline void read_OBJ_soup(std::istream& is, const std::string& file, Triangle_so
           lr.fail("relative face index " + std::to_string(i) + " points before the first vertex");
         t[k] = static_cast<std::size_t>(r);
       }
-      soup.triangles.push_back(t);
-      soup.triangle_lines.push_back(lr.line_number());
+      add_face(soup, t, lr.line_number());
     }
     else if(kw == "l" || kw == "c")
     {
@@ -118,7 +118,7 @@ inline void read_OBJ_soup(std::istream& is, const std::string& file, Triangle_so
           lr.fail("cannot parse index " + quote(tok[k]) + " in '" + std::string(kw) + "' record");
         long long r;
         if(i < 0)  // OBJ relative index
-          r = static_cast<long long>(is_l ? soup.points.size() : soup.triangles.size()) + i;
+          r = static_cast<long long>(is_l ? soup.points.size() : number_of_faces(soup)) + i;
         else
           r = i + offset;
         if(r < 0)
@@ -151,7 +151,7 @@ inline void read_OBJ_soup(std::istream& is, const std::string& file, Triangle_so
   for(const Pending& p : polylines)
     info.obj_polylines.push_back(Obj_polyline{resolve(p, soup.points.size(), "vertex", "l", "vertices"), p.line});
   for(const Pending& p : chains)
-    info.obj_dual_chains.push_back(Obj_dual_chain{resolve(p, soup.triangles.size(), "face", "c", "faces"), p.line});
+    info.obj_dual_chains.push_back(Obj_dual_chain{resolve(p, number_of_faces(soup), "face", "c", "faces"), p.line});
 }
 
 } // namespace internal

@@ -90,6 +90,7 @@ inline void read_OFF_soup(std::istream& is, const std::string& file, Triangle_so
     soup.points.push_back(p);
     soup.point_lines.push_back(lr.line_number());
   }
+  std::vector<std::size_t> t;   // the current face's vertices (reused)
   for(long long j = 0; j < nf; ++j)
   {
     if(!next_content())
@@ -100,10 +101,10 @@ inline void read_OFF_soup(std::istream& is, const std::string& file, Triangle_so
       lr.fail("cannot parse the vertex count " + quote(tok[0]) + " of a face");
     if(static_cast<std::size_t>(k) + 1 > tok.size())
       lr.fail("face record announces " + std::to_string(k) + " vertices but has fewer indices");
-    if(k != 3)
+    if(k < 3)
       lr.fail(face_arity_message(static_cast<std::size_t>(j), static_cast<std::size_t>(k)));
-    std::array<std::size_t, 3> t;
-    for(std::size_t c = 0; c < 3; ++c)
+    t.resize(static_cast<std::size_t>(k));
+    for(std::size_t c = 0; c < t.size(); ++c)
     {
       long long i;
       if(!parse_int(tok[c + 1], i))
@@ -112,14 +113,13 @@ inline void read_OFF_soup(std::istream& is, const std::string& file, Triangle_so
         lr.fail("negative face index " + std::to_string(i));
       t[c] = static_cast<std::size_t>(i);
     }
-    for(std::size_t c = 4; c < tok.size(); ++c)  // optional colour
+    for(std::size_t c = t.size() + 1; c < tok.size(); ++c)  // optional colour
     {
       double x;
       if(!parse_double(tok[c], x))
         lr.fail("trailing junk " + quote(tok[c]) + " after the face indices");
     }
-    soup.triangles.push_back(t);
-    soup.triangle_lines.push_back(lr.line_number());
+    add_face(soup, t, lr.line_number());
   }
   if(next_content())
     lr.fail("trailing junk after the last face (" + quote(tok[0]) + ")");

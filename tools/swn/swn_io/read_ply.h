@@ -269,10 +269,10 @@ inline void read_ply_ascii_body(const std::string& data, const Ply_header& heade
     const bool is_vertex = int(i) == header.vertex, is_face = int(i) == header.face;
     if(is_vertex) soup.points.reserve(reserve_cap(el.count));
     if(is_face) soup.triangles.reserve(reserve_cap(el.count));
+    std::vector<std::size_t> t;   // the current face's vertices (reused)
     for(long long n = 0; n < el.count; ++n)
     {
       std::array<double, 3> p{0, 0, 0};
-      std::array<std::size_t, 3> t{0, 0, 0};
       std::size_t first_line = 0;
       for(std::size_t k = 0; k < el.props.size(); ++k)
       {
@@ -292,15 +292,16 @@ inline void read_ply_ascii_body(const std::string& data, const Ply_header& heade
           throw Input_error(file, body.line(), "negative list length");
         const std::size_t size = static_cast<std::size_t>(c);
         const bool indices = is_face && int(k) == header.indices;
-        if(indices && size != 3)
-          throw Input_error(file, body.line(), face_arity_message(soup.triangles.size(), size));
+        if(indices && size < 3)
+          throw Input_error(file, body.line(), face_arity_message(number_of_faces(soup), size));
+        if(indices) t.clear();
         for(std::size_t m = 0; m < size; ++m)
         {
           const double x = body.read(pr.type);
           if(!indices) continue;
           if(x < 0)
             throw Input_error(file, body.line(), "negative face index " + std::to_string(static_cast<long long>(x)));
-          t[m] = static_cast<std::size_t>(x);
+          t.push_back(static_cast<std::size_t>(x));
         }
       }
       if(is_vertex)
@@ -311,8 +312,7 @@ inline void read_ply_ascii_body(const std::string& data, const Ply_header& heade
       }
       else if(is_face)
       {
-        soup.triangles.push_back(t);
-        soup.triangle_lines.push_back(first_line);
+        add_face(soup, t, first_line);
       }
     }
   }

@@ -161,7 +161,8 @@ inline void read_STL_soup(std::istream& is, const std::string& file, Triangle_so
           ++nvert;
         }
         if(nvert != 3)
-          throw Input_error(file, facet_line, face_arity_message(facet, nvert));
+          throw Input_error(file, facet_line, "facet " + std::to_string(facet) + " has " + std::to_string(nvert) +
+                                                " vertices (STL facets are triangles)");
         expect("endloop");
         expect("endfacet");
         add_stl_triangle(tri, facet_line, facet, file, soup, index, info);

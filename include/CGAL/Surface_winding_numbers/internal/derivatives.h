@@ -45,12 +45,12 @@ inline double corner_jump_at(const Mesh_tables& m, const std::vector<double>& f,
 }
 
 // Jump derivative J f (paper Sec. 2.4.1, Sec. 3.6): per edge, the jump across the edge averaged
-// over its two endpoints; zero on border edges.
+// over its two endpoints; zero on border edges and where no jump is allowed (jump_forbidden).
 inline std::vector<double> jump_derivative(const Mesh_tables& m, const std::vector<double>& f)
 {
   std::vector<double> g(m.ne, 0.);
   for(std::size_t a = 0; a < m.arcs.size(); ++a)
-    g[m.arcs[a].edge] = 0.5 * (corner_jump_at(m, f, a, 0) + corner_jump_at(m, f, a, 1));
+    if(!m.jump_forbidden(m.arcs[a].edge)) g[m.arcs[a].edge] = 0.5 * (corner_jump_at(m, f, a, 0) + corner_jump_at(m, f, a, 1));
   return g;
 }
 

@@ -42,7 +42,7 @@ public:
     {
       const std::size_t f = order.empty() ? k : order[k];
       const std::size_t c = m.face_component[f];
-      if(m.component_border_edges[c] == 0 && m.component_first_face[c] == f) continue;   // pinned
+      if(!m.is_general() && m.component_border_edges[c] == 0 && m.component_first_face[c] == f) continue;   // pinned
       dof_[f] = n++;
     }
     n_ = n;
@@ -63,7 +63,16 @@ public:
           if(j != i && fj != npos) A_->add_coef(fi, fj, m.fs[s] * m.fs[t] / star[e]);
         }
       }
-    for(std::size_t k = 0; k < n; ++k) A_->add_coef(k, k, diagonal[k]);
+    // A nonmanifold surface may hold several 2-cycles per component, a nonorientable one none: no
+    // face is pinned there; a shift of 1e-10 of the mean diagonal makes B definite, as in the authors'
+    // code (d1 omega is orthogonal to every 2-cycle, so beta only moves along them).
+    double shift = 0;
+    if(m.is_general())
+    {
+      for(double d : diagonal) shift += d;
+      shift *= 1e-10 / double(n);
+    }
+    for(std::size_t k = 0; k < n; ++k) A_->add_coef(k, k, diagonal[k] + shift);
     double D = 1;
     if(!la_->factor(*A_, D)) throw Solver_failure("factorization of the 2-form Laplacian failed");
     m_ = &m;

@@ -44,17 +44,6 @@ std::vector<Sum> chain_boundary(const Mesh_tables& m, const std::vector<Value>& 
   return d;
 }
 
-// Interior endpoints: vertices off the border where the chain has a boundary. Curves may end on
-// the border without creating a singularity (relative homology, paper Sec. 2.2.1).
-inline std::vector<char> interior_endpoints(const Mesh_tables& m, const std::vector<double>& chain)
-{
-  const std::vector<double> d = chain_boundary(m, chain);
-  std::vector<char> endpoint(m.nv, 0);
-  for(std::size_t v = 0; v < m.nv; ++v)
-    endpoint[v] = (std::abs(d[v]) > chain_tolerance && !m.vertex_on_border[v]) ? 1 : 0;
-  return endpoint;
-}
-
 // Prescribed jumps, left minus right, per arc and per endpoint of the arc's edge: jump[2a + k] is
 // the jump measured at vertex ev[2 * edge + k]. The first solve uses Gamma at both ends.
 inline std::vector<double> arc_jumps_from_chain(const Mesh_tables& m, const std::vector<double>& chain)
@@ -66,16 +55,21 @@ inline std::vector<double> arc_jumps_from_chain(const Mesh_tables& m, const std:
 
 // Reduced coordinates c (paper Eq. 3): per-corner offsets that realise the prescribed jumps around
 // every vertex. Corners of a vertex are visited across arcs from a root corner with c = 0; the
-// root choice only shifts u0 at that vertex. Excluded vertices (interior endpoints) keep c = 0.
+// root choice only shifts u0 at that vertex. Excluded vertices (interior endpoints) and nonmanifold
+// vertices keep c = 0. With `defect`, each vertex also gets the largest amount by which the jumps
+// around it fail to close (|dGamma| at that vertex on an oriented surface; on a nonorientable one
+// the only way to tell the endpoints, since a dual chain has no global boundary).
 inline std::vector<double> reduced_coordinates(const Mesh_tables& m, const std::vector<double>& arc_jump,
-                                               const std::vector<char>& excluded)
+                                               const std::vector<char>& excluded,
+                                               std::vector<double>* defect = nullptr)
 {
   std::vector<double> c(3 * m.nf, 0.);
   std::vector<char> done(3 * m.nf, 0);
   std::vector<std::size_t> stack;
+  if(defect) defect->assign(m.nv, 0.);
   for(std::size_t v = 0; v < m.nv; ++v)
   {
-    if(excluded[v]) continue;
+    if(excluded[v] || m.is_nonmanifold(v)) continue;
     for(std::size_t i = m.vertex_corner_begin[v]; i < m.vertex_corner_begin[v + 1]; ++i)
     {
       const std::size_t root = m.vertex_corners[i];
@@ -95,8 +89,12 @@ inline std::vector<double> reduced_coordinates(const Mesh_tables& m, const std::
           const bool in_left = (s == arc.left_side);
           const std::size_t other = in_left ? arc.right_side : arc.left_side;
           const std::size_t nb = m.corner_at(other / 3, v);
-          if(done[nb]) continue;
           const double J = arc_jump[2 * a + (m.ev[2 * e] == v ? 0 : 1)];
+          if(done[nb])
+          {
+            if(defect) (*defect)[v] = (std::max)((*defect)[v], std::abs(c[nb] - (in_left ? c[cr] - J : c[cr] + J)));
+            continue;
+          }
           c[nb] = in_left ? c[cr] - J : c[cr] + J;
           done[nb] = 1;
           stack.push_back(nb);
@@ -105,6 +103,22 @@ inline std::vector<double> reduced_coordinates(const Mesh_tables& m, const std::
     }
   }
   return c;
+}
+
+// Interior endpoints: vertices off the border where the chain has a boundary. Curves may end on
+// the border without creating a singularity (relative homology, paper Sec. 2.2.1). On a surface with
+// nonorientable arcs the boundary is read from how the jumps close around each vertex.
+inline std::vector<char> interior_endpoints(const Mesh_tables& m, const std::vector<double>& chain)
+{
+  std::vector<double> d;
+  if(m.nonorientable_arcs > 0)
+    reduced_coordinates(m, arc_jumps_from_chain(m, chain), std::vector<char>(m.nv, 0), &d);
+  else
+    d = chain_boundary(m, chain);
+  std::vector<char> endpoint(m.nv, 0);
+  for(std::size_t v = 0; v < m.nv; ++v)
+    endpoint[v] = (std::abs(d[v]) > chain_tolerance && !m.vertex_on_border[v]) ? 1 : 0;
+  return endpoint;
 }
 
 // X = A^-1 B for the k columns of B (n x k, column-major; X is resized to n x k) with a factorized

@@ -30,12 +30,18 @@ constexpr std::size_t npos = std::numeric_limits<std::size_t>::max();
   - Side s = 3*f + k is the oriented side of face f from corner 3f+k to corner 3f+(k+1)%3; the face
     lies to the left of its sides. fe[s] is the side's edge, fs[s] = +1 if the side runs along the
     edge's reference direction ev[2e] -> ev[2e+1], -1 otherwise.
-  - An arc is a pair of faces glued along an edge with opposite orientations: the "left" face is the
-    one whose side runs along the edge's reference direction. Jumps of corner functions across an arc
-    are always measured left minus right. An edge with exactly one side is a border edge; edges with
-    more sides, or with two sides running the same way (nonmanifold or nonorientable gluing), carry no
-    arc and are listed in `unpaired_edges` (the polygon-soup entry point will give them a meaning;
-    the FaceGraph path never produces them).
+  - An arc is a pair of faces glued along an edge. Jumps of corner functions across an arc are always
+    measured left minus right, and a chain value on an edge is the jump across its arc. For faces
+    glued with opposite orientations (the oriented manifold case) the "left" face is the one whose
+    side runs along the edge's reference direction, so that the chain is the usual primal 1-chain.
+    Two faces traversing their edge the same way (a nonorientable gluing, paper Sec. 3.7) make an arc
+    too: its left face is the one that comes first in the input, and the chain value on the edge is
+    then a dual 1-chain value (the jump from the second face into the first).
+  - An edge with exactly one side is a border edge. An edge with more than two sides is a
+    nonmanifold edge: its first side is paired with each of the others in arcs across which nothing
+    may jump (paper Sec. 2.4.1). A vertex whose faces do not form a single fan through the manifold
+    edges (or that lies on a nonmanifold edge) is a nonmanifold vertex: its corners get c = 0
+    (Eq. 3) and no jump is allowed across the edges at it (Sec. 2.2, Sec. 3.4).
 */
 struct Arc
 {
@@ -56,7 +62,11 @@ struct Mesh_tables
   std::vector<std::size_t> edge_side_begin, edge_sides;       // CSR edge -> sides
   std::vector<Arc> arcs;
   std::vector<std::size_t> edge_arc;                          // edge -> arc or npos
-  std::vector<std::size_t> unpaired_edges;
+  std::vector<std::size_t> unpaired_edges;                    // nonmanifold edges (more than two sides)
+  std::size_t nonorientable_arcs = 0;                         // arcs joining faces that traverse their edge the same way
+  std::vector<char> vertex_nonmanifold;                       // empty when every vertex is manifold
+  std::vector<char> edge_at_nonmanifold;                      // nonmanifold edges and edges at nonmanifold vertices
+  std::size_t nonmanifold_vertices = 0;
   std::vector<char> edge_on_border;                           // exactly one incident side
   std::vector<std::size_t> vertex_corner_begin, vertex_corners; // CSR vertex -> corners
   std::vector<char> vertex_on_border;
@@ -85,6 +95,16 @@ struct Mesh_tables
   }
   std::size_t polygon_triangle(std::size_t p) const { return polygon_corner_at(p, 0) / 3; }
   bool is_virtual(std::size_t e) const { return !edge_virtual.empty() && edge_virtual[e]; }
+  bool is_nonmanifold(std::size_t v) const { return !vertex_nonmanifold.empty() && vertex_nonmanifold[v]; }
+  // no function may jump across e: a diagonal inside a polygon, a nonmanifold edge or an edge at a
+  // nonmanifold vertex (Eq. 11 gets the equality constraints of Sec. 3.4 there)
+  bool jump_forbidden(std::size_t e) const
+  {
+    return is_virtual(e) || (!edge_at_nonmanifold.empty() && edge_at_nonmanifold[e]);
+  }
+  // not an oriented 2-manifold: the Euler characteristic no longer tells the topology, the harmonic
+  // basis and the reduced residual (which assume one) are not used
+  bool is_general() const { return nonmanifold_vertices > 0 || nonorientable_arcs > 0; }
 
   // Index of every element in the input's numbering when the tables were renumbered
   // (locality_order.h); empty when the tables keep it. Error messages name elements by it.
@@ -136,6 +156,7 @@ struct Mesh_tables
   // 1-cycle bounds), when it is a disk (chi = 1, with border) or a sphere (chi = 2).
   bool component_is_disk_or_sphere(std::size_t c) const
   {
+    if(is_general()) return false;
     const long chi = component_euler_characteristic[c];
     return (chi == 1 && component_border_edges[c] > 0) || (chi == 2 && component_border_edges[c] == 0);
   }
@@ -152,6 +173,39 @@ struct Mesh_tables
     return true;
   }
 };
+
+// Nonmanifold vertices: the ends of nonmanifold edges, and vertices whose corners fall into several
+// fans (corners of one vertex joined across its arcs of two-sided edges); then the edges at them.
+inline void find_nonmanifold_vertices(Mesh_tables& m)
+{
+  m.vertex_nonmanifold.clear();
+  m.edge_at_nonmanifold.clear();
+  m.nonmanifold_vertices = 0;
+  std::vector<char> nonmanifold(m.nv, 0);
+  for(std::size_t e : m.unpaired_edges) nonmanifold[m.ev[2 * e]] = nonmanifold[m.ev[2 * e + 1]] = 1;
+  Union_find fans(3 * m.nf);
+  for(const Arc& a : m.arcs)
+  {
+    if(m.edge_side_begin[a.edge + 1] - m.edge_side_begin[a.edge] != 2) continue;
+    for(int k = 0; k < 2; ++k)
+    {
+      const std::size_t v = m.ev[2 * a.edge + k];
+      fans.unite(m.corner_at(a.left_side / 3, v), m.corner_at(a.right_side / 3, v));
+    }
+  }
+  for(std::size_t v = 0; v < m.nv; ++v)
+  {
+    const std::size_t b = m.vertex_corner_begin[v], n = m.vertex_corner_begin[v + 1] - b;
+    for(std::size_t i = 1; i < n && !nonmanifold[v]; ++i)
+      if(fans.find(m.vertex_corners[b + i]) != fans.find(m.vertex_corners[b])) nonmanifold[v] = 1;
+    m.nonmanifold_vertices += nonmanifold[v] ? 1 : 0;
+  }
+  if(m.nonmanifold_vertices == 0) return;
+  m.vertex_nonmanifold = std::move(nonmanifold);
+  m.edge_at_nonmanifold.assign(m.ne, 0);
+  for(std::size_t e = 0; e < m.ne; ++e)
+    m.edge_at_nonmanifold[e] = (m.vertex_nonmanifold[m.ev[2 * e]] || m.vertex_nonmanifold[m.ev[2 * e + 1]]) ? 1 : 0;
+}
 
 // Completes the tables from points, fv, fe, ev (and nv, nf, ne): orientation signs, incidences,
 // arcs, border flags, vertex corner lists and components. Throws Invalid_input on a side whose
@@ -182,24 +236,29 @@ inline void finalize_mesh_tables(Mesh_tables& m)
   // arcs and border edges
   m.arcs.clear();
   m.unpaired_edges.clear();
+  m.nonorientable_arcs = 0;
   m.edge_arc.assign(m.ne, npos);
   m.edge_on_border.assign(m.ne, 0);
   for(std::size_t e = 0; e < m.ne; ++e)
   {
     const std::size_t b = m.edge_side_begin[e], n = m.edge_side_begin[e + 1] - b;
     if(n == 1) { m.edge_on_border[e] = 1; continue; }
+    if(n < 2) continue;
+    m.edge_arc[e] = m.arcs.size();
+    std::size_t s0 = m.edge_sides[b], s1 = m.edge_sides[b + 1];
     if(n == 2)
     {
-      std::size_t s0 = m.edge_sides[b], s1 = m.edge_sides[b + 1];
-      if(m.fs[s0] == -m.fs[s1])
+      if(m.fs[s0] == -m.fs[s1]) { if(m.fs[s0] < 0) std::swap(s0, s1); }
+      else
       {
-        if(m.fs[s0] < 0) std::swap(s0, s1);
-        m.edge_arc[e] = m.arcs.size();
-        m.arcs.push_back(Arc{e, s0, s1});
-        continue;
+        if(m.input_face_index(s1 / 3) < m.input_face_index(s0 / 3)) std::swap(s0, s1);
+        ++m.nonorientable_arcs;
       }
+      m.arcs.push_back(Arc{e, s0, s1});
+      continue;
     }
-    if(n > 0) m.unpaired_edges.push_back(e);
+    m.unpaired_edges.push_back(e);
+    for(std::size_t i = b + 1; i < b + n; ++i) m.arcs.push_back(Arc{e, s0, m.edge_sides[i]});
   }
 
   // vertex -> corners, border vertices
@@ -214,6 +273,7 @@ inline void finalize_mesh_tables(Mesh_tables& m)
   m.vertex_on_border.assign(m.nv, 0);
   for(std::size_t e = 0; e < m.ne; ++e)
     if(m.edge_on_border[e]) m.vertex_on_border[m.ev[2 * e]] = m.vertex_on_border[m.ev[2 * e + 1]] = 1;
+  find_nonmanifold_vertices(m);
 
   // face components through arcs; faces sharing only a vertex (or a nonmanifold edge) are also one
   // component for labelling

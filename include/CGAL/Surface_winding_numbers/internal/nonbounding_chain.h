@@ -97,10 +97,11 @@ inline std::size_t close_rounded_chain(const Mesh_tables& m, const std::vector<d
   // vertex -> incident arcs (CSR), the border vertices grouped under the border node
   auto node_of = [&](std::size_t v) { return m.vertex_on_border[v] ? border : v; };
   std::vector<std::size_t> begin(m.nv + 2, 0), incident;
-  // (diagonals inside input polygons are left out: G lives on the input's edges)
+  // (diagonals inside input polygons are left out: G lives on the input's edges; nothing may jump at
+  // nonmanifold vertices)
   for(const Arc& a : m.arcs)
   {
-    if(m.is_virtual(a.edge)) continue;
+    if(m.jump_forbidden(a.edge)) continue;
     ++begin[node_of(m.ev[2 * a.edge]) + 1];
     ++begin[node_of(m.ev[2 * a.edge + 1]) + 1];
   }
@@ -110,7 +111,7 @@ inline std::size_t close_rounded_chain(const Mesh_tables& m, const std::vector<d
     std::vector<std::size_t> fill(begin.begin(), begin.end() - 1);
     for(std::size_t a = 0; a < m.arcs.size(); ++a)
     {
-      if(m.is_virtual(m.arcs[a].edge)) continue;
+      if(m.jump_forbidden(m.arcs[a].edge)) continue;
       incident[fill[node_of(m.ev[2 * m.arcs[a].edge])]++] = a;
       incident[fill[node_of(m.ev[2 * m.arcs[a].edge + 1])]++] = a;
     }
@@ -216,7 +217,8 @@ inline std::vector<int> nonbounding_chain(const Mesh_tables& m, const std::vecto
                                           const std::vector<double>& chain, std::size_t* closing_units = nullptr)
 {
   std::vector<int> G = rounded_chain(g);
-  const std::size_t units = close_rounded_chain(m, g, chain, G);
+  // On a nonorientable surface G is a dual chain, without a global boundary to close: left as rounded.
+  const std::size_t units = m.nonorientable_arcs > 0 ? 0 : close_rounded_chain(m, g, chain, G);
   if(closing_units) *closing_units = units;
   return G;
 }

@@ -25,6 +25,7 @@
 #include <cmath>
 #include <future>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <string>
 #include <system_error>
@@ -77,12 +78,6 @@ public:
   explicit Winding_number_core(Mesh_tables tables) : m_(std::move(tables))
   {
     if(m_.nf == 0) throw Invalid_input("the mesh has no face");
-    if(!m_.unpaired_edges.empty())
-    {
-      std::size_t e = npos;
-      for(std::size_t x : m_.unpaired_edges) e = m_.first_edge_in_input(e, x);
-      throw Invalid_input("edge " + edge_name(e) + " is nonmanifold or joins faces of opposite orientation");
-    }
     check_geometry(m_);
     clamped_weights_ = cotan_weights(m_, weight_);
     star_ = edge_hodge_star(m_, weight_);
@@ -101,12 +96,33 @@ public:
   template <class LP>
   Core_result solve(const std::vector<double>& chain, const Solve_options& options, LP& lp, Solve_report& rep)
   {
+    if(chain.size() != m_.ne) throw Invalid_input("the chain has the wrong size");
+    if(m_.nonmanifold_vertices == 0) return solve_on_edges(chain, options, lp, rep);
+    // Edges at nonmanifold vertices carry no curve (paper Sec. 2.2): which side is which is not
+    // defined there. The gaps this makes are closed like any other.
+    std::vector<double> kept(chain);
+    std::size_t dropped = 0;
+    for(std::size_t e = 0; e < m_.ne; ++e)
+      if(m_.jump_forbidden(e) && kept[e] != 0)
+      {
+        dropped += std::isfinite(kept[e]) ? 1 : 0;
+        if(std::isfinite(kept[e])) kept[e] = 0;
+      }
+    Core_result r = solve_on_edges(kept, options, lp, rep);
+    rep.dropped_curve_edges = dropped;
+    return r;
+  }
+
+  template <class LP>
+  Core_result solve_on_edges(const std::vector<double>& chain, const Solve_options& options, LP& lp, Solve_report& rep)
+  {
     const double epsilon = options.epsilon;
     const bool verbose = options.verbose;
     if(chain.size() != m_.ne) throw Invalid_input("the chain has the wrong size");
     if(!(epsilon > 0) || !std::isfinite(epsilon)) throw Invalid_input("epsilon must be positive and finite");
     Stopwatch clock, total;
     fill_mesh_report(rep);
+    rep.dropped_curve_edges = 0;
     rep.curve_edges = 0;
     std::size_t bad_value = npos, on_border = npos;   // first offending edges, in the input's numbering
     for(std::size_t e = 0; e < m_.ne; ++e)
@@ -128,6 +144,7 @@ public:
     const std::vector<char> endpoint = interior_endpoints(m_, chain);
     rep.interior_endpoints = 0;
     for(char c : endpoint) rep.interior_endpoints += c ? 1 : 0;
+    rep.inconsistent_curve_vertices = m_.nonorientable_arcs > 0 ? inconsistent_curve_vertices(chain) : 0;
     rep.time_setup = clock.lap();
     if(verbose)
       std::cerr << "[swn] " << m_.nv << " vertices, " << m_.nf << " faces, " << m_.n_components << " component(s), "
@@ -220,7 +237,7 @@ public:
       if(verbose) std::cerr << "[swn] Darboux derivative and harmonic part: " << rep.time_hodge << " s\n";
 
       // v: residual function (Eq. 11), or its reduced approximation (Sec. 6)
-      if(options.reduced_residual)
+      if(options.reduced_residual && !m_.is_general())   // Sec. 6 assumes an oriented 2-manifold
         r.v = reduced_residual_function(m_, chain, gamma, epsilon, lp, options.concurrent, rep.lp_objective, rep.lp_variables, rep.lp_rows);
       else
       {
@@ -232,7 +249,7 @@ public:
         for(std::size_t k = 0; k < 3 * m_.nf; ++k) r.v[k] = v0[k] + sigma[k / 3];
       }
       rep.lp_ran = true;
-      rep.reduced_residual = options.reduced_residual;
+      rep.reduced_residual = options.reduced_residual && !m_.is_general();
       r.g = jump_derivative(m_, r.v);
       rep.time_residual = clock.lap();
       if(verbose)
@@ -261,6 +278,28 @@ public:
     rep.time_labels = clock.lap();
     rep.time_total = total.lap();
     return r;
+  }
+
+  // On a nonorientable surface (Sec. 3.7, Fig. 9): the vertices where a curve passes through (two
+  // curve edges of equal multiplicity) but its jumps add up instead of cancelling, i.e. where the
+  // curve's normal flips: the curve is not orientable there and the labels near it mean little.
+  std::size_t inconsistent_curve_vertices(const std::vector<double>& chain) const
+  {
+    std::vector<double> defect;
+    reduced_coordinates(m_, arc_jumps_from_chain(m_, chain), std::vector<char>(m_.nv, 0), &defect);
+    std::vector<int> degree(m_.nv, 0);
+    std::vector<double> size(m_.nv, 0.);
+    for(std::size_t e = 0; e < m_.ne; ++e)
+      if(std::abs(chain[e]) > chain_tolerance)
+        for(int k = 0; k < 2; ++k)
+        {
+          ++degree[m_.ev[2 * e + k]];
+          size[m_.ev[2 * e + k]] += std::abs(chain[e]);
+        }
+    std::size_t n = 0;
+    for(std::size_t v = 0; v < m_.nv; ++v)
+      if(degree[v] == 2 && !m_.vertex_on_border[v] && std::abs(defect[v] - size[v]) < 1e-6 * size[v]) ++n;
+    return n;
   }
 
   // u of the first jump Laplace solve (Eq. 10); factorizes L (unless it is factorized already for
@@ -319,6 +358,8 @@ public:
   // tree-cotree finds)
   std::size_t expected_classes() const
   {
+    // the tree-cotree generators assume an oriented 2-manifold: elsewhere the 2-form Laplacian
+    if(m_.is_general()) return std::numeric_limits<std::size_t>::max();
     std::size_t K = 0;
     for(std::size_t c = 0; c < m_.n_components; ++c) K += std::size_t((std::max)(m_.component_cohomology_classes(c), 0L));
     return K;
@@ -354,6 +395,9 @@ public:
       rep.genus += int((2 - m_.component_euler_characteristic[c] - long(border_loops(c))) / 2);
     }
     rep.degenerate_weights = clamped_weights_;
+    rep.nonmanifold_vertices = m_.nonmanifold_vertices;
+    rep.nonmanifold_edges = m_.unpaired_edges.size();
+    rep.nonorientable_edges = m_.nonorientable_arcs;
   }
 
   // number of border loops of component c (border edges chained through their vertices)

@@ -17,6 +17,7 @@
 #include <cmath>
 #include <map>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -182,6 +183,35 @@ Mesh_tables polygon_mesh_tables(std::vector<double> xyz, const PolygonRange& pol
   }
   finalize_mesh_tables(m);
   return m;
+}
+
+// Adds a dual 1-chain (paper Sec. 3.7) to `chain`: each pair (a, b) of polygons adds a jump of +1 from
+// a into b across the input edge they share (left minus right on its arc). Throws Invalid_input, naming
+// the pair, when a or b is out of range or the two share no edge.
+template <class PairRange>
+void add_dual_chain(const Mesh_tables& m, const PairRange& pairs, std::vector<double>& chain)
+{
+  auto polygon = [&](std::size_t f) { return m.face_polygon.empty() ? f : m.face_polygon[f]; };
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> arc_of;   // (polygon, polygon) -> arc, both orders
+  for(std::size_t a = 0; a < m.arcs.size(); ++a)
+  {
+    if(m.is_virtual(m.arcs[a].edge)) continue;
+    const std::size_t L = polygon(m.arcs[a].left_side / 3), R = polygon(m.arcs[a].right_side / 3);
+    arc_of.emplace(std::make_pair(L, R), a);
+    arc_of.emplace(std::make_pair(R, L), a);
+  }
+  const std::size_t np = m.number_of_polygons();
+  std::size_t k = 0;
+  for(const auto& pair : pairs)
+  {
+    const std::size_t a = std::size_t(std::get<0>(pair)), b = std::size_t(std::get<1>(pair));
+    const std::string which = "dual chain pair " + std::to_string(k++) + " (" + std::to_string(a) + ", " + std::to_string(b) + ")";
+    if(a >= np || b >= np) throw Invalid_input(which + ": polygon index out of range (" + std::to_string(np) + " polygons)");
+    const auto it = arc_of.find(std::make_pair(a, b));
+    if(it == arc_of.end()) throw Invalid_input(which + ": the two polygons share no edge");
+    const Arc& arc = m.arcs[it->second];
+    chain[arc.edge] += polygon(arc.left_side / 3) == b ? 1. : -1.;   // rises into b
+  }
 }
 
 } // namespace internal

@@ -38,6 +38,50 @@ inline std::vector<double> local_integration(const Mesh_tables& m, const std::ve
   return v;
 }
 
+// The constraints "no jump across an edge at a nonmanifold vertex or inside a polygon" (Sec. 3.4,
+// sigma_L - sigma_R = s_e) fix each such arc's shift difference. Where these arcs close a cycle (the
+// fan around a nonmanifold vertex, two flaps meeting at a spine) the sampled jumps s_e add up to zero
+// only up to the discretization (no curve crosses them, so there is no integer part): the constraint
+// is kept exactly on a spanning forest of these arcs, and on the arcs that close a cycle the jump is
+// fixed to the forest's small mismatch instead of 0, which keeps the problem feasible.
+inline void make_forbidden_jumps_consistent(const Mesh_tables& m, Residual_problem& p)
+{
+  const std::size_t na = m.arcs.size(), nf = p.number_of_faces;
+  std::vector<std::vector<std::size_t> > at(nf);
+  bool any = false;
+  for(std::size_t a = 0; a < na; ++a)
+    if(m.jump_forbidden(m.arcs[a].edge))
+    {
+      at[p.left[a]].push_back(a);
+      at[p.right[a]].push_back(a);
+      any = true;
+    }
+  if(!any) return;
+  // offset[f]: sigma_f relative to its tree's root, from sigma_L - sigma_R = -s along tree arcs
+  const double unset = std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> offset(nf, unset);
+  std::vector<char> in_tree(na, 0);
+  std::vector<std::size_t> queue;
+  for(std::size_t root = 0; root < nf; ++root)
+  {
+    if(at[root].empty() || !std::isnan(offset[root])) continue;
+    offset[root] = 0.;
+    queue.assign(1, root);
+    for(std::size_t q = 0; q < queue.size(); ++q)
+      for(std::size_t a : at[queue[q]])
+      {
+        const std::size_t x = queue[q], y = p.left[a] == x ? p.right[a] : p.left[a];
+        if(!std::isnan(offset[y])) continue;
+        offset[y] = p.left[a] == x ? offset[x] + p.s[a] : offset[x] - p.s[a];
+        in_tree[a] = 1;
+        queue.push_back(y);
+      }
+  }
+  for(std::size_t a = 0; a < na; ++a)
+    if(m.jump_forbidden(m.arcs[a].edge) && !in_tree[a])
+      p.lower[a] = p.upper[a] = p.s[a] + offset[p.left[a]] - offset[p.right[a]];   // J on this arc
+}
+
 // Data of the residual problem (paper Eq. 11) over the interior edges (arcs): s_e is the jump of the
 // locally integrated v0 across the arc, averaged over the arc's two endpoints. The paper's objective
 // is multiplied by eps (same argmin): cost eps * l on curve edges, l elsewhere, with lengths in units
@@ -63,7 +107,7 @@ inline Residual_problem residual_problem(const Mesh_tables& m, const std::vector
     p.s[a] = 0.5 * (corner_jump_at(m, v0, a, 0) + corner_jump_at(m, v0, a, 1));
     const double len = m.edge_length(arc.edge) / mean_length;
     const double G = chain[arc.edge];
-    if(m.is_virtual(arc.edge))   // a diagonal inside an input polygon: no jump
+    if(m.jump_forbidden(arc.edge))   // a diagonal inside a polygon, an edge at a nonmanifold vertex: no jump
     {
       p.cost[a] = len;
       p.lower[a] = p.upper[a] = 0.;
@@ -82,6 +126,7 @@ inline Residual_problem residual_problem(const Mesh_tables& m, const std::vector
     }
   }
   p.gauge_faces = m.component_first_face;
+  make_forbidden_jumps_consistent(m, p);
   return p;
 }
 
