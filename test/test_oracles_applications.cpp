@@ -4,6 +4,7 @@
 #include <CGAL/Surface_winding_numbers/polylines_to_chain.h>
 #include <CGAL/Surface_winding_numbers/stamp_polylines.h>
 
+#include "mesh_generators.h"
 #include "test_oracles_curves_support.h"
 
 #include <array>
@@ -131,6 +132,65 @@ TEST(Selection, EmptySelectionGivesNoPiece)
   Chain chain = new_chain(m);
   EXPECT_EQ(SWN::orient_edge_selection(m, std::vector<Mesh::Edge_index>{}, chain), 0u);
   for(auto e : edges(m)) EXPECT_EQ(chain[e], 0);
+}
+
+} // namespace
+
+namespace {
+
+// filter_nonbounding_loops(false): the labels contour u itself (the paper's Fig. 27). A meridian of a
+// torus bounds nothing: filtered, one label and G = the meridian; unfiltered, u grows by one around the
+// torus, so the labels split it along the meridian and along the opposite contour u = 1/2.
+TEST(ContourU, MeridianOfATorusSplitsItInHalvesWhenNotFiltered)
+{
+  const int nu = 24, nv = 12;
+  const swn_test::Soup soup = swn_test::make_torus(nu, nv, 3);
+  Mesh m;
+  std::vector<Mesh::Vertex_index> v;
+  for(const auto& p : soup.points) v.push_back(m.add_vertex(p));
+  for(const auto& t : soup.triangles) m.add_face(v[t[0]], v[t[1]], v[t[2]]);
+  std::vector<Mesh::Vertex_index> meridian;
+  for(auto i : swn_test::torus_meridian(nu, nv, 0)) meridian.push_back(v[i]);
+  meridian.push_back(meridian.front());
+  Chain chain = new_chain(m);
+  ASSERT_TRUE(SWN::add_vertex_polyline_to_chain(m, meridian, chain));
+
+  auto labels = m.add_property_map<Mesh::Face_index, int>("f:labels", 0).first;
+  auto G = m.add_property_map<Mesh::Edge_index, int>("e:G", 0).first;
+  auto bounding = m.add_property_map<Mesh::Edge_index, int>("e:bounding", 0).first;
+  ASSERT_TRUE(CGAL::surface_winding_numbers(m, chain, labels, SWN::parameters::nonbounding_chain_map(G)));
+  for(auto f : faces(m)) EXPECT_EQ(labels[f], 0);
+  for(auto e : edges(m)) EXPECT_EQ(G[e], chain[e]);
+
+  SWN::Solve_report report;
+  ASSERT_TRUE(CGAL::surface_winding_numbers(m, chain, labels,
+                SWN::parameters::filter_nonbounding_loops(false, SWN::parameters::nonbounding_chain_map(G,
+                SWN::parameters::bounding_chain_map(bounding, SWN::parameters::report(std::ref(report)))))));
+  EXPECT_FALSE(report.lp_ran);
+  std::map<int, std::size_t> count;
+  for(auto f : faces(m)) ++count[labels[f]];
+  ASSERT_EQ(count.size(), 2u);
+  // the two halves (u is the face's parameter, 0..nu around the torus, the meridian at 0), away from the
+  // meridian and from the contour u = 1/2 (100 stands for the label 0)
+  int inside = 0, outside = 0;
+  for(auto f : faces(m))
+  {
+    const double u = soup.fparam[std::size_t(f)][0];
+    if(u > 1.5 && u < nu / 2 - 1.5) { if(inside == 0) inside = labels[f] == 0 ? 100 : labels[f]; }
+    if(u > nu / 2 + 1.5 && u < nu - 1.5) { if(outside == 0) outside = labels[f] == 0 ? 100 : labels[f]; }
+  }
+  EXPECT_NE(inside, outside);
+  for(auto f : faces(m))
+  {
+    const double u = soup.fparam[std::size_t(f)][0];
+    if(u > 1.5 && u < nu / 2 - 1.5) EXPECT_EQ(labels[f] == 0 ? 100 : labels[f], inside);
+    if(u > nu / 2 + 1.5 && u < nu - 1.5) EXPECT_EQ(labels[f] == 0 ? 100 : labels[f], outside);
+  }
+  for(auto e : edges(m))
+  {
+    EXPECT_EQ(G[e], 0);
+    if(chain[e] != 0) EXPECT_EQ(bounding[e], chain[e]) << "the meridian is part of the bounding chain";
+  }
 }
 
 } // namespace

@@ -74,6 +74,8 @@ static const char* usage =
   "                         glpk (simplex)\n"
   "  --reduced-residual     approximate the residual LP by the paper's reduced problem (Sec. 6): gaps\n"
   "                         closed by shortest paths, one shift per region (faster, approximate)\n"
+  "  --no-nonbounding-filter  label by rounding the jump-harmonic function u itself (paper Fig. 27): loops\n"
+  "                         around handles are completed by contours of u instead of being filtered out\n"
   "  --sequential           use one thread: factorize the Hodge projection's matrix after the first\n"
   "                         solve and write w.obj after the other files (default: both on a second\n"
   "                         thread, during the first solve and while the other files are written)\n"
@@ -121,6 +123,7 @@ struct Options
 #endif
   double epsilon = 0.01;
   bool quiet = false, verbose = false, help = false, reduced_residual = false, sequential = false;
+  bool unfiltered = false;   // --no-nonbounding-filter
 };
 
 Options parse_arguments(int argc, char** argv)
@@ -157,6 +160,7 @@ Options parse_arguments(int argc, char** argv)
     else if(a == "--quiet") o.quiet = true;
     else if(a == "--verbose") o.verbose = true;
     else if(a == "--reduced-residual") o.reduced_residual = true;
+    else if(a == "--no-nonbounding-filter") o.unfiltered = true;
     else if(a == "--sequential") o.sequential = true;
     else if(a == "--epsilon")
     {
@@ -382,9 +386,10 @@ int main(int argc, char** argv)
       SWN::parameters::winding_number_map(w, SWN::parameters::nonbounding_chain_map(G,
       SWN::parameters::nonbounding_chain_real_map(g, SWN::parameters::bounding_chain_map(B,
       SWN::parameters::epsilon(opt.epsilon, SWN::parameters::use_reduced_residual(opt.reduced_residual,
+      SWN::parameters::filter_nonbounding_loops(!opt.unfiltered,
       SWN::parameters::concurrency(!opt.sequential,
       SWN::parameters::lp_solver(std::ref(lp),
-      SWN::parameters::report(std::ref(report))))))))))
+      SWN::parameters::report(std::ref(report)))))))))))
         .verbose(opt.verbose).sparse_linear_solver(sparse_solver));
   });
   if(!ok)
