@@ -17,6 +17,7 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <vector>
@@ -30,10 +31,12 @@ namespace Surface_winding_numbers {
 \brief orients a selection of unoriented edges, as a selection tool gives it, and adds it to `chain`.
 
 The selection is cut into pieces, the maximal paths of selected edges through vertices where exactly two
-selected edges meet. Each piece is oriented along itself, in the sense that makes it turn counter-clockwise,
-seen from the side the faces face, around the centroid of the whole selection (the length-weighted mean of
-the edges' midpoints): the orientation of a lasso drawn around a region. This is right for selections of
-the border of one region that is roughly star-shaped from its centroid; pieces far from the region, whose
+selected edges meet, and the pieces are grouped into clusters: two pieces whose ends are closer than five
+mean lengths of the selected edges are in one cluster (the pieces of one loop broken by gaps). Each piece
+is oriented along itself, in the sense that makes it turn counter-clockwise, seen from the side the faces
+face, around the centroid of its cluster (the length-weighted mean of the edges' midpoints): the
+orientation of a lasso drawn around a region. This is right for the borders of regions that are roughly
+star-shaped from their centroids, with gaps shorter than the clusters' reach; isolated pieces, whose
 orientation is then arbitrary, are what the surface winding numbers filter out.
 
 Then `CGAL::surface_winding_numbers()` with a `bounding_chain_map` completes the selection: its labels
@@ -78,7 +81,10 @@ std::size_t orient_edge_selection(const TriangleMesh& tm, const EdgeRange& selec
   auto selected = get(CGAL::dynamic_edge_property_t<bool>(), tm);   // false by default
   auto degree = get(CGAL::dynamic_vertex_property_t<int>(), tm);    // 0 by default
   std::vector<halfedge_descriptor> edges_in;
-  Vector centroid = NULL_VECTOR;
+  auto point = [&](vertex_descriptor v) { return get(vpm, v) - CGAL::ORIGIN; };
+  auto length_of = [&](halfedge_descriptor h) {
+    return std::sqrt(CGAL::to_double((point(target(h, tm)) - point(source(h, tm))).squared_length()));
+  };
   double length = 0;
   for(auto e : selection)
   {
@@ -87,25 +93,12 @@ std::size_t orient_edge_selection(const TriangleMesh& tm, const EdgeRange& selec
     const halfedge_descriptor h = halfedge(e, tm);
     edges_in.push_back(h);
     for(vertex_descriptor v : {source(h, tm), target(h, tm)}) put(degree, v, get(degree, v) + 1);
-    const auto &p = get(vpm, source(h, tm)), &q = get(vpm, target(h, tm));
-    const double l = std::sqrt(CGAL::to_double((q - p).squared_length()));
-    centroid = centroid + (l / 2) * ((p - CGAL::ORIGIN) + (q - CGAL::ORIGIN));
-    length += l;
+    length += length_of(h);
   }
   if(edges_in.empty()) return 0;
-  centroid = centroid / length;
+  const double link = 5 * length / double(edges_in.size());
 
-  // the normal of an edge: the sum of its faces' (area-weighted) normals
-  auto normal = [&](halfedge_descriptor h) {
-    Vector n = NULL_VECTOR;
-    for(halfedge_descriptor g : {h, opposite(h, tm)})
-      if(!is_border(g, tm))
-      {
-        const auto &a = get(vpm, source(g, tm)), &b = get(vpm, target(g, tm)), &c = get(vpm, target(next(g, tm), tm));
-        n = n + CGAL::cross_product(b - a, c - a);
-      }
-    return n;
-  };
+  // the pieces, each along itself
   auto visited = get(CGAL::dynamic_edge_property_t<bool>(), tm);
   // the next selected halfedge after h through a vertex of degree 2 (none at other vertices)
   auto next_in_piece = [&](halfedge_descriptor h) {
@@ -115,10 +108,11 @@ std::size_t orient_edge_selection(const TriangleMesh& tm, const EdgeRange& selec
       if(get(selected, edge(g, tm)) && edge(g, tm) != edge(h, tm)) return g;
     return Traits::null_halfedge();
   };
-  std::size_t pieces = 0;
-  std::vector<halfedge_descriptor> oriented;
-  auto add_piece = [&](halfedge_descriptor start) {
-    std::vector<halfedge_descriptor> piece;
+  std::vector<std::vector<halfedge_descriptor> > pieces;
+  for(halfedge_descriptor start : edges_in)
+  {
+    if(get(visited, edge(start, tm))) continue;
+    pieces.emplace_back();
     // back to the start of the piece (or once around a loop), then forward
     halfedge_descriptor h = start;
     for(halfedge_descriptor b = next_in_piece(opposite(h, tm)); b != Traits::null_halfedge() && edge(b, tm) != edge(start, tm);
@@ -127,22 +121,59 @@ std::size_t orient_edge_selection(const TriangleMesh& tm, const EdgeRange& selec
     for(; h != Traits::null_halfedge() && !get(visited, edge(h, tm)); h = next_in_piece(h))
     {
       put(visited, edge(h, tm), true);
-      piece.push_back(h);
+      pieces.back().push_back(h);
     }
-    double turn = 0;
-    for(halfedge_descriptor g : piece)
-    {
-      const auto &p = get(vpm, source(g, tm)), &q = get(vpm, target(g, tm));
-      const Vector mid = ((p - CGAL::ORIGIN) + (q - CGAL::ORIGIN)) / 2;
-      turn += CGAL::to_double(CGAL::cross_product(mid - centroid, q - p) * normal(g));
-    }
-    for(halfedge_descriptor g : piece) oriented.push_back(turn < 0 ? opposite(g, tm) : g);
-    ++pieces;
+  }
+
+  // clusters: pieces whose ends are closer than five mean selected edge lengths (a loop broken by gaps)
+  const std::size_t n = pieces.size();
+  std::vector<std::size_t> cluster(n);
+  for(std::size_t i = 0; i < n; ++i) cluster[i] = i;
+  auto find = [&](std::size_t i) { while(cluster[i] != i) i = cluster[i] = cluster[cluster[i]]; return i; };
+  auto ends = [&](std::size_t i) {
+    return std::array<Vector, 2>{point(source(pieces[i].front(), tm)), point(target(pieces[i].back(), tm))};
   };
-  for(halfedge_descriptor h : edges_in)
-    if(!get(visited, edge(h, tm))) add_piece(h);
+  for(std::size_t i = 0; i < n; ++i)
+    for(std::size_t j = i + 1; j < n; ++j)
+      for(const Vector& p : ends(i))
+        for(const Vector& q : ends(j))
+          if(CGAL::to_double((p - q).squared_length()) < link * link) cluster[find(i)] = find(j);
+  // the length-weighted centroid of every cluster
+  std::vector<Vector> centroid(n, NULL_VECTOR);
+  std::vector<double> weight(n, 0.);
+  for(std::size_t i = 0; i < n; ++i)
+    for(halfedge_descriptor h : pieces[i])
+    {
+      const double l = length_of(h);
+      centroid[find(i)] = centroid[find(i)] + (l / 2) * (point(source(h, tm)) + point(target(h, tm)));
+      weight[find(i)] += l;
+    }
+
+  // the normal of an edge: the sum of its faces' (area-weighted) normals
+  auto normal = [&](halfedge_descriptor h) {
+    Vector nm = NULL_VECTOR;
+    for(halfedge_descriptor g : {h, opposite(h, tm)})
+      if(!is_border(g, tm))
+      {
+        const Vector a = point(source(g, tm)), b = point(target(g, tm)), c = point(target(next(g, tm), tm));
+        nm = nm + CGAL::cross_product(b - a, c - a);
+      }
+    return nm;
+  };
+  std::vector<halfedge_descriptor> oriented;
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const Vector c = centroid[find(i)] / weight[find(i)];
+    double turn = 0;
+    for(halfedge_descriptor g : pieces[i])
+    {
+      const Vector p = point(source(g, tm)), q = point(target(g, tm));
+      turn += CGAL::to_double(CGAL::cross_product((p + q) / 2 - c, q - p) * normal(g));
+    }
+    for(halfedge_descriptor g : pieces[i]) oriented.push_back(turn < 0 ? opposite(g, tm) : g);
+  }
   add_halfedges_to_chain(tm, oriented, chain);
-  return pieces;
+  return n;
 }
 
 } // namespace Surface_winding_numbers
