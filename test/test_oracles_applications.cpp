@@ -75,7 +75,10 @@ TEST(Stamp, ThroughAHoleTheStampIsBrokenAndTheGapsAreClosed)
   m.collect_garbage();
   const Drawing square{{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}, {-1, -1}}};
   const auto stamped = SWN::stamp_polylines(m, square, SWN::fit_stamp_frame(m, square, K::Vector_3(0, 0, -1), 0.5));
-  EXPECT_GE(stamped.size(), 2u) << "the rays through the hole break the square";
+  // the rays through the hole see the inside of the far side (back faces): the square is broken once and
+  // comes out as one open polyline
+  ASSERT_EQ(stamped.size(), 1u);
+  EXPECT_NE(stamped[0].front(), stamped[0].back()) << "the rays through the hole break the square";
   Chain chain = new_chain(m);
   const auto r = SWN::polylines_to_chain(m, stamped, chain);
   ASSERT_TRUE(r) << r.error;
