@@ -18,4 +18,4 @@ python3 "$fig/render_ply.py" "$tmp/curves.ply" "$fig/curves_off_the_mesh.png" --
 python3 "$fig/render_ply.py" "$tmp/stamp/mesh.ply" "$fig/stamp_bunny.png" --direction 0,0,-1 --curves "$tmp/stamp/bounding.obj"
 
 "$build/examples/selection_and_segmentation" "$tmp/selection"
-python3 "$fig/render_ply.py" "$tmp/selection_labels.ply" "$fig/selection_and_segmentation.png" --direction 0,-1,-0.8
+python3 "$fig/render_ply.py" "$tmp/selection_labels.ply" "$fig/selection_and_segmentation.png" --direction 0,-0.3,-1
