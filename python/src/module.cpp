@@ -40,12 +40,19 @@ std::size_t face_vertex(py::handle x, std::size_t f)
   return static_cast<std::size_t>(v);
 }
 
+// the binding takes triangle meshes: polygons are refused with the message of the tool's readers
+std::string face_size_message(std::size_t face, std::size_t n)
+{
+  if(n < 3) return IO::internal::face_arity_message(face, n);
+  return "face " + std::to_string(face) + " has " + std::to_string(n) + " vertices: only triangle meshes are supported";
+}
+
 void add_triangles(const py::array& F, Triangle_soup& soup)
 {
   if(!is_integer_array(F))
     throw py::type_error("F must hold integer vertex indices, not " + std::string(py::str(F.dtype())));
   if(F.ndim() != 2) throw py::value_error("F must be an (m, 3) array of vertex indices, not of shape " + shape_of(F));
-  if(F.shape(1) != 3) throw py::value_error(IO::internal::face_arity_message(0, std::size_t(F.shape(1))));
+  if(F.shape(1) != 3) throw py::value_error(face_size_message(0, std::size_t(F.shape(1))));
   const auto f = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(F);
   const auto t = f.unchecked<2>();
   soup.triangles.resize(std::size_t(t.shape(0)));
@@ -109,7 +116,7 @@ Triangle_soup soup_from_arrays(py::handle V, py::handle F)
         if(!PySequence_Check(polygon.ptr()))
           throw py::type_error("face " + std::to_string(j) + " is not a sequence of vertex indices");
         const py::sequence s = py::reinterpret_borrow<py::sequence>(polygon);
-        if(s.size() != 3) throw py::value_error(IO::internal::face_arity_message(j, s.size()));
+        if(s.size() != 3) throw py::value_error(face_size_message(j, s.size()));
         soup.triangles.push_back({face_vertex(s[0], j), face_vertex(s[1], j), face_vertex(s[2], j)});
         ++j;
       }

@@ -13,14 +13,7 @@ namespace {
 
 double soup_face_area(const SIO::Triangle_soup& soup, const std::vector<std::size_t>& face)
 {
-  double n[3] = {0, 0, 0};   // Newell's normal: twice the area vector
-  for(std::size_t k = 0; k < face.size(); ++k)
-  {
-    const auto &p = soup.points[face[k]], &q = soup.points[face[(k + 1) % face.size()]];
-    n[0] += (p[1] - q[1]) * (p[2] + q[2]);
-    n[1] += (p[2] - q[2]) * (p[0] + q[0]);
-    n[2] += (p[0] - q[0]) * (p[1] + q[1]);
-  }
+  const std::array<double, 3> n = SIO::internal::newell_normal(soup, face);
   return 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
 }
 

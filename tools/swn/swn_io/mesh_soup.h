@@ -206,10 +206,11 @@ inline void check_soup_faces(const Triangle_soup& soup, const std::string& file)
       if(v >= nv)
         throw Input_error(file, fline(f), "face " + std::to_string(f) + " refers to vertex " + std::to_string(v) +
                                               " (0-based) but there are only " + std::to_string(nv) + " vertices");
+    std::string listed;   // the face as written, for the message
+    for(std::size_t v : sorted) listed += (listed.empty() ? "" : ", ") + std::to_string(v);
     std::sort(sorted.begin(), sorted.end());
-    const auto rep = std::adjacent_find(sorted.begin(), sorted.end());
-    if(rep != sorted.end())
-      throw Input_error(file, fline(f), "face " + std::to_string(f) + " has a repeated vertex (" + std::to_string(*rep) + ")");
+    if(std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+      throw Input_error(file, fline(f), "face " + std::to_string(f) + " has a repeated vertex (" + listed + ")");
   }
 }
 
@@ -301,6 +302,27 @@ inline std::string oriented_manifold_problem(const Triangle_soup& soup, std::vec
   return std::string();
 }
 
+/// Newell's normal of a face of the soup: twice its area vector (zero iff the face has zero area).
+template <class Face>
+std::array<double, 3> newell_normal(const Triangle_soup& soup, const Face& face)
+{
+  std::array<double, 3> n = {0, 0, 0};
+  if(face.size() == 3)   // the cross product: exactly zero for collinear corners
+  {
+    const auto &p = soup.points[face[0]], &q = soup.points[face[1]], &r = soup.points[face[2]];
+    const double u[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]}, w[3] = {r[0] - p[0], r[1] - p[1], r[2] - p[2]};
+    return {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+  }
+  for(std::size_t k = 0; k < face.size(); ++k)
+  {
+    const auto &p = soup.points[face[k]], &q = soup.points[face[(k + 1) % face.size()]];
+    n[0] += (p[1] - q[1]) * (p[2] + q[2]);
+    n[1] += (p[2] - q[2]) * (p[0] + q[0]);
+    n[2] += (p[0] - q[0]) * (p[1] + q[1]);
+  }
+  return n;
+}
+
 /// Fills the statistics of `info` (vertex and face counts, unreferenced vertices, duplicated positions,
 /// zero-area faces) and its warnings.
 inline void soup_statistics(const Triangle_soup& soup, Mesh_read_info& info)
@@ -309,25 +331,14 @@ inline void soup_statistics(const Triangle_soup& soup, Mesh_read_info& info)
   info.number_of_vertices = nv;
   info.number_of_faces = nf;
   std::vector<char> used(nv, 0);
-  auto face = [&](std::size_t f) {
-    return soup.polygons.empty() ? std::vector<std::size_t>(soup.triangles[f].begin(), soup.triangles[f].end())
-                                 : soup.polygons[f];
-  };
   std::size_t degenerate = 0;
-  for(std::size_t f = 0; f < nf; ++f)
-  {
-    const std::vector<std::size_t> c = face(f);
-    double n[3] = {0, 0, 0};   // Newell's normal: zero iff the polygon has zero area
-    for(std::size_t k = 0; k < c.size(); ++k)
-    {
-      used[c[k]] = 1;
-      const auto &p = soup.points[c[k]], &q = soup.points[c[(k + 1) % c.size()]];
-      n[0] += (p[1] - q[1]) * (p[2] + q[2]);
-      n[1] += (p[2] - q[2]) * (p[0] + q[0]);
-      n[2] += (p[0] - q[0]) * (p[1] + q[1]);
-    }
-    if(n[0] == 0 && n[1] == 0 && n[2] == 0) ++degenerate;
-  }
+  auto visit = [&](const auto& face) {
+    for(std::size_t v : face) used[v] = 1;
+    const std::array<double, 3> n = newell_normal(soup, face);
+    degenerate += n[0] == 0 && n[1] == 0 && n[2] == 0;
+  };
+  for(const auto& t : soup.triangles) visit(t);
+  for(const auto& p : soup.polygons) visit(p);
   std::vector<std::size_t> unref;
   for(std::size_t v = 0; v < nv; ++v)
     if(!used[v]) unref.push_back(v);
