@@ -70,12 +70,11 @@ Every point is projected to the closest point of the surface (`CGAL::Polygon_mes
 Points farther from the surface than `projection_tolerance` are dropped, and the polyline is broken there.
 Two consecutive projected points `a` and `b` are joined by a straight walk through faces: the curve on
 the surface is the intersection of the surface with the plane through `a` and `b` that contains the mean
-of the two faces' normals, followed from face to face until the face of `b`. The walk is local and
-linear in the number of faces crossed, always gives a curve inside the faces (no crossing of itself), and
-stays where the user drew; a geodesic shortest path (`CGAL::Surface_mesh_shortest_path`) would cost a
-sequence tree per point and cut corners that the user drew. A walk that meets the border of the
-mesh or turns back makes a gap. The surface winding numbers close the gaps, so a broken curve is an
-ordinary input.
+of the two faces' normals, followed from face to face until the face of `b`. The walk is local, linear in
+the number of faces crossed, and stays under what the user drew; a geodesic shortest path
+(`CGAL::Surface_mesh_shortest_path`) would cost a sequence tree per point and cut the corners of what the
+user drew. A walk that meets the border of the mesh or goes astray makes a gap. The surface winding
+numbers close the gaps, so a broken curve is an ordinary input.
 
 The curve made of the points where walks cross edges is put on the mesh by `conforming_cut()`; polyline
 points strictly inside a face are not vertices of the curve (inside a face the curve is the straight
