@@ -98,6 +98,20 @@ TEST(ToolCurves, StampedDiamondLabelsItsShadowOnTheSphere)
   fs::remove_all(dir);
 }
 
+TEST(ToolCurves, NoNonboundingFilterContoursU)
+{
+  // torus with the letter Phi: filtered, the broken meridian is G (tested with the demo data); unfiltered,
+  // u's contours split the torus along the completed meridian and the opposite contour: one more label
+  std::string summary;
+  const std::map<int, int> filtered = solve_demo("'" + demo + "torus.obj' --curve '" + demo + "torus-phi.txt'", "phi", &summary);
+  EXPECT_EQ(summary.find("\"nonbounding_edges\": 0,"), std::string::npos);
+  const std::map<int, int> unfiltered =
+    solve_demo("'" + demo + "torus.obj' --curve '" + demo + "torus-phi.txt' --no-nonbounding-filter", "phi_u", &summary);
+  EXPECT_EQ(unfiltered.size(), filtered.size() + 1);
+  EXPECT_NE(summary.find("\"nonbounding_edges\": 0,"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("\"lp_ran\": false"), std::string::npos) << summary;
+}
+
 TEST(ToolCurves, BadFilesGiveFileLineOrAWarning)
 {
   const fs::path dir = fresh_dir("bad_curves");
