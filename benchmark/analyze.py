@@ -2,6 +2,10 @@
 """Markdown tables for RESULTS.md from a benchmark result directory (standard library only).
 
   analyze.py DIR [--label NAME]
+  analyze.py --factors DIR               every factor separately (gap level, shared edges, planted loops,
+                                         genus, size), on broken inputs (gap > 0) only
+  analyze.py --confidence DIR            confidence of the cases with handles: low confidence against
+                                         failure (precision, recall), second-best labeling, simulated hints
   analyze.py --compare LABEL=DIR...      one line per result directory (ablations)
   analyze.py --speed BEFORE AFTER        whole solve / first jump-Laplace solve on the cases with handles
                                          of two runs of the same cases (issue 5's "<= 3x" target); BEFORE and
@@ -86,11 +90,115 @@ def speed(before_dirs, after_dirs):
                                                                row[0][2], row[1][2]))
 
 
+def load_ok(d):
+    rows = [r for r in csv.DictReader(open(os.path.join(d, "cases.csv"))) if r["ok"] == "1"]
+    for r in rows:
+        for k, v in list(r.items()):
+            if k not in ("case", "mesh", "source", "labels_hash", "G_hash"):
+                x = num(v)
+                r[k] = x if x is not None or v == "" else v
+    return rows
+
+
+def line(name, rs, recovered=True):
+    v = [r["error_percent"] for r in rs]
+    if not v:
+        return "| %s | 0 | - | - | - | - |" % name
+    rec = pct(sum(1 for r in rs if r.get("loops_recovered") == 1) / len(rs)) if recovered else "-"
+    return "| %s | %d | %.3f / %.3f / %.2f | %s | %s |" % (name, len(v), statistics.fmean(v), statistics.median(v), max(v),
+                                                     pct(sum(1 for x in v if x < 0.5) / len(v)), rec)
+
+
+def factors(d):
+    ok = load_ok(d)
+    broken = [r for r in ok if r["gap_level"] > 0]
+    g0 = [r for r in broken if r["simply_connected"] == 1]
+    gh = [r for r in broken if r["simply_connected"] == 0]
+    print("Broken inputs only (gap level > 0): %d simply connected, %d with handles.\n" % (len(g0), len(gh)))
+    head = "| %s | cases | mean / median / max error (%%) | share < 0.5 %% | G ~ planted |\n|---|---|---|---|---|"
+    print(head % "simply connected, gap level")
+    for gap in sorted(set(r["gap_level"] for r in g0)):
+        print(line("%d %%" % round(100 * gap), [r for r in g0 if r["gap_level"] == gap], False))
+    print(line("all", g0, False))
+    print()
+    sizes = ((0, 30000, "< 30k faces"), (30000, 60000, "30k-60k"), (60000, 120000, "60k-120k"), (120000, 10 ** 9, ">= 120k"))
+    genus = ((0, 0, "0 (several border loops)"), (1, 1, "1"), (2, 2, "2"), (3, 3, "3"), (4, 6, "4-6"), (7, 99, "11"))
+    tables = (
+        ("gap level", [("%d %%" % round(100 * g), lambda r, g=g: r["gap_level"] == g) for g in sorted(set(r["gap_level"] for r in gh))]),
+        ("planted loops share edges with region curves", [("yes", lambda r: r["planted_shared_edges"] > 0), ("no", lambda r: r["planted_shared_edges"] == 0)]),
+        ("planted loops and arcs", [("1", lambda r: r["planted_loops"] + r["planted_arcs"] == 1), ("2", lambda r: r["planted_loops"] + r["planted_arcs"] == 2),
+                                    ("3 or more", lambda r: r["planted_loops"] + r["planted_arcs"] >= 3)]),
+        ("genus", [(n, lambda r, lo=lo, hi=hi: lo <= r["genus"] <= hi) for lo, hi, n in genus]),
+        ("size", [(n, lambda r, lo=lo, hi=hi: lo <= r["faces"] < hi) for lo, hi, n in sizes]),
+    )
+    for title, groups in tables:
+        print(head % ("with handles, " + title))
+        for name, pred in groups:
+            rs = [r for r in gh if pred(r)]
+            if rs:
+                print(line(name, rs))
+        print()
+    print(head % "with handles, all broken")
+    print(line("all", gh))
+    print()
+
+
+def confidence(d, thresholds=(0.5, 1, 2, 4, 8)):
+    ok = load_ok(d)
+    gh = [r for r in ok if r["simply_connected"] == 0 and r["gap_level"] > 0 and r.get("error_hint_missing_run") is not None]
+    if not gh:
+        print("no confidence data in %s" % d)
+        return
+    for r in gh:
+        if r.get("min_flip_cost") is None:
+            r["min_flip_cost"] = float("inf")   # no region to flip
+        for k in ("error_second_best", "error_hint_least_confident"):
+            if r.get(k) is None:
+                r[k] = r["error_percent"]
+    n = len(gh)
+    share = lambda key: pct(sum(1 for r in gh if r[key] < 0.5) / n)
+    fail = [r for r in gh if r["error_percent"] >= 0.5]
+    print("Cases with handles, broken inputs: %d, of which %d fail (error >= 0.5 %%).\n" % (n, len(fail)))
+    print("| labeling | share < 0.5 % | mean error (%) |")
+    print("|---|---|---|")
+    for name, key in (("SWN", "error_percent"), ("second-best labeling (the cheapest flip applied)", "error_second_best"),
+                      ("hint: the user labels the least confident region", "error_hint_least_confident"),
+                      ("hint: the user labels the largest mislabeled region", "error_hint_largest_mislabeled"),
+                      ("hint: the user redraws one missing piece of the input (re-solve)", "error_hint_missing_run")):
+        print("| %s | %s | %.3f |" % (name, share(key), statistics.fmean(r[key] for r in gh)))
+    best2 = [min(r["error_percent"], r["error_second_best"]) for r in gh]
+    print("| oracle: the better of SWN and the second-best labeling | %s | %.3f |" % (
+        pct(sum(1 for x in best2 if x < 0.5) / n), statistics.fmean(best2)))
+    print()
+    print("Low confidence (cheapest flip of a region of >= 0.5 % of the area costs less than T mean edge lengths in")
+    print("Eq. 11) as a predictor of failure:\n")
+    print("| T | flagged | precision | recall | share < 0.5 % among the unflagged |")
+    print("|---|---|---|---|---|")
+    for t in thresholds:
+        flagged = [r for r in gh if r["min_flip_cost"] < t]
+        tp = sum(1 for r in flagged if r["error_percent"] >= 0.5)
+        rest = [r for r in gh if r not in flagged]
+        print("| %g | %d | %s | %s | %s |" % (t, len(flagged), pct(tp / len(flagged)) if flagged else "-",
+                                             pct(tp / len(fail)) if fail else "-",
+                                             pct(sum(1 for r in rest if r["error_percent"] < 0.5) / len(rest)) if rest else "-"))
+    wc = [r["worst_cell_flip_cost"] for r in fail if r["worst_cell_flip_cost"] >= 0]
+    if wc:
+        print("\nFailing cases: median flip cost of the largest mislabeled region %.2f (%d of %d finite), median cheapest flip %.2f."
+              % (statistics.median(wc), len(wc), len(fail), statistics.median(r["min_flip_cost"] for r in fail)))
+    good = [r for r in gh if r["error_percent"] < 0.5]
+    if good:
+        print("Passing cases: median cheapest flip %.2f." % statistics.median(r["min_flip_cost"] for r in good))
+    print("(The second-best labeling and the least-confident hint keep SWN's labels where no region is eligible.)")
+    print()
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("dir", nargs="?")
     ap.add_argument("--label", default="")
     ap.add_argument("--compare", nargs="+")
+    ap.add_argument("--factors", action="store_true")
+    ap.add_argument("--confidence", action="store_true")
     ap.add_argument("--speed", nargs=2, metavar=("BEFORE", "AFTER"))
     a = ap.parse_args()
     if a.speed:
@@ -98,6 +206,12 @@ def main():
         return
     if a.compare:
         compare(a.compare)
+        return
+    if a.factors or a.confidence:
+        if a.factors:
+            factors(a.dir)
+        if a.confidence:
+            confidence(a.dir)
         return
     rows = list(csv.DictReader(open(os.path.join(a.dir, "cases.csv"))))
     s = json.load(open(os.path.join(a.dir, "summary.json")))

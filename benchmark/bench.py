@@ -6,7 +6,8 @@
   bench.py --merge --out DIR SHARD_DIR...     merge shard results into DIR
   bench.py --summarize --out DIR              recompute summary.json and plots from DIR/cases.csv
 
-Writes DIR/cases.csv (one row per case), DIR/summary.json and DIR/*.png (gnuplot, when installed).
+Writes DIR/cases.csv (one row per case), DIR/summary.json and DIR/*.png (gnuplot and matplotlib, when
+installed).
 """
 import argparse
 import csv
@@ -23,10 +24,10 @@ import time
 from concurrent.futures import ThreadPoolExecutor
 
 COLUMNS = [
-    "case", "mesh", "source", "vertices", "faces", "genus", "border_loops", "simply_connected",
-    "region_seed", "gap_level", "gap_fraction", "curve_edges_full", "curve_edges", "interior_endpoints",
+    "case", "suite", "mesh", "source", "vertices", "faces", "genus", "border_loops", "simply_connected",
+    "region_seed", "regions", "eigenfunction", "gap_level", "gap_fraction", "curve_edges_full", "curve_edges", "interior_endpoints",
     "max_gt_label", "planted_loops", "planted_arcs", "planted_edges", "planted_nontrivial",
-    "planted_shared_edges", "planted_cancelled_edges", "loops_straightened",
+    "planted_shared_edges", "planted_cancelled_edges", "loops_straightened", "loops_rerouting_failed",
     "ok", "status", "error", "lp_backend", "sparse_solver", "epsilon",
     "error_percent", "naive_error_percent",
     "G_edges", "G_closed", "G_closing_units", "G_nonzero_in_homology", "G_homologous_to_planted", "G_planted_edges_matched",
@@ -36,6 +37,9 @@ COLUMNS = [
     "time_read", "time_construct", "time_setup", "time_jump_laplace", "time_hodge", "time_residual",
     "time_second_solve", "time_labels", "time_total", "time_swn", "time_naive", "peak_rss_mb",
     "api_match",
+    "decomposition_mismatch_edges", "cells", "cells_eligible", "min_flip_cost", "min_flip_boundary", "min_flip_area_percent",
+    "error_second_best", "error_hint_least_confident", "worst_cell_wrong_percent", "worst_cell_flip_cost",
+    "error_hint_largest_mislabeled", "hint_run_edges", "error_hint_missing_run",
 ]
 
 
@@ -287,7 +291,16 @@ def summarize(rows, out, extra):
     return summary
 
 
+def matplotlib_plots(out):
+    """error_factors.png and confidence.png (plots.py), when python3-matplotlib is installed."""
+    script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "plots.py")
+    r = subprocess.run([sys.executable, script, out], capture_output=True, text=True)
+    if r.returncode != 0:
+        print("[bench] plots.py failed (apt-get install python3-matplotlib): " + r.stderr.strip()[-300:], file=sys.stderr)
+
+
 def plots(rows, out):
+    matplotlib_plots(out)
     gp = shutil.which("gnuplot")
     if not gp:
         print("[bench] gnuplot not found: no plots (apt-get install gnuplot-nox)", file=sys.stderr)
@@ -386,6 +399,10 @@ def main():
     ap.add_argument("--command", default="")
     ap.add_argument("--gaps", default="per-curve", help="gap mode of the generator: per-curve | global")
     ap.add_argument("--straighten", default="on", help="straighten the planted loops: on | off")
+    ap.add_argument("--gap-levels", default="", help="comma-separated gap levels instead of the suite's (calibration)")
+    ap.add_argument("--only", default="", help="simply-connected | handles: the meshes of one class only")
+    ap.add_argument("--regions", default="", help="field | eigen: the region draws instead of the suite's")
+    ap.add_argument("--loops-off-regions", default="", help="on | off: route the planted loops off the region curves or not")
     ap.add_argument("--merge", action="store_true")
     ap.add_argument("--summarize", action="store_true")
     ap.add_argument("dirs", nargs="*")
@@ -424,6 +441,14 @@ def main():
     if args.mesh_cache:
         gen += ["--mesh-cache", args.mesh_cache]
     gen += ["--gaps", args.gaps, "--straighten", args.straighten]
+    if args.gap_levels:
+        gen += ["--gap-levels", args.gap_levels]
+    if args.only:
+        gen += ["--only", args.only]
+    if args.regions:
+        gen += ["--regions", args.regions]
+    if args.loops_off_regions:
+        gen += ["--loops-off-regions", args.loops_off_regions]
     print("[bench] generating cases: " + " ".join(gen), file=sys.stderr)
     run(gen)
     t_gen = time.time() - t0
@@ -445,7 +470,8 @@ def main():
         rows = list(ex.map(one, enumerate(cases)))
     write_csv(os.path.join(out, "cases.csv"), rows)
     extra = {"suite": args.suite, "shard": args.shard, "jobs": args.jobs, "timeout_seconds": args.timeout,
-             "lp_option": args.lp, "epsilon": args.epsilon, "gap_mode": args.gaps, "straighten": args.straighten, "command": args.command or " ".join(sys.argv), "git_commit": git_commit(root),
+             "lp_option": args.lp, "epsilon": args.epsilon, "gap_mode": args.gaps, "gap_levels_option": args.gap_levels, "only": args.only,
+             "regions_option": args.regions, "loops_off_regions_option": args.loops_off_regions, "straighten": args.straighten, "command": args.command or " ".join(sys.argv), "git_commit": git_commit(root),
              "generation_seconds": t_gen, "wall_time_seconds": time.time() - t0}
     s = summarize(rows, out, extra)
     plots(rows, out)

@@ -7,7 +7,8 @@ Checks accuracy only (never times): required fields present, every case solved, 
 agrees with the solver class, gap-free simply connected cases are exact, the genus-0 mean error and
 is under a sane bound, on gap-free surfaces with handles the nonbounding chain G is homologous to
 the planted loops, G is closed in every case with handles, and SWN beats the naive baseline on
-surfaces with handles. (The error of single
+surfaces with handles; the confidence data of the cases with handles: input = J W + G on gap-free input, a
+hint on the largest mislabeled region never raises the error. (The error of single
 cases with handles is not bounded: a region may legitimately be absorbed into G, see RESULTS.md.) Prints one line per check and 'N passed, N failed'.
 """
 import argparse
@@ -52,6 +53,12 @@ def main():
         open_G = [r["case"] for r in handles if r.get("G_closed") != "1"]
         check("G is closed (relative to the border) in every case with handles", not open_G,
               "(%d cases%s)" % (len(handles), ", open: %s" % open_G[:5] if open_G else ""))
+        conf = [r for r in handles if r.get("decomposition_mismatch_edges") not in (None, "")]
+        check("confidence computed in every case with handles", len(conf) == len(handles), "(%d of %d)" % (len(conf), len(handles)))
+        bad = [r["case"] for r in conf if float(r.get("gap_level") or 0) == 0 and r["decomposition_mismatch_edges"] != "0"]
+        check("gap-free cases with handles: input = J W + G on every edge", not bad, "(%s)" % bad[:5])
+        worse = [r["case"] for r in conf if float(r["error_hint_largest_mislabeled"]) > float(r["error_percent"]) + 1e-9]
+        check("labelling the largest mislabeled region right never raises the error", not worse, "(%s)" % worse[:5])
         nm, sm = s.get("naive_handles_mean_error_percent"), s.get("handles_mean_error_percent")
         check("SWN beats naive rounding on surfaces with handles", sm is not None and nm is not None and sm < nm,
               "(SWN %s, naive %s)" % (sm, nm))

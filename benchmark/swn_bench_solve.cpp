@@ -14,6 +14,12 @@
 //   is homologous to the planted chain in H1(M, border) (G - planted = J F for a face function F);
 // * Solve_report timings, construction time, peak memory (getrusage).
 //
+// * confidence (cases with handles, default residual solver; bench_confidence.h): the cheapest flip of a
+//   region (a cell of constant W between input, G and label jumps) that is not the largest of its
+//   component and covers >= 0.5 % of the area; the second-best labeling (that flip applied); simulated
+//   single user hints: the least confident region labelled right, the largest mislabeled region
+//   labelled right (local changes, no re-solve), one missing run of the input redrawn (re-solve).
+//
 // --check-api also runs the free function CGAL::surface_winding_numbers() and checks that it gives the
 // same labels and G as the solver class.
 
@@ -27,6 +33,7 @@
 #include <CGAL/Surface_winding_numbers/internal/jump_laplace.h>
 #include <CGAL/Surface_winding_numbers/internal/nonbounding_chain.h>
 #include <CGAL/Surface_winding_numbers/internal/winding_number.h>
+#include "bench_confidence.h"
 
 #include <sys/resource.h>
 
@@ -306,6 +313,76 @@ int main(int argc, char** argv)
       for(auto e : mesh.edges()) api_match = api_match && G2[e] == G[e];
     }
 
+    // confidence, second-best labeling, simulated hints (bench_confidence.h)
+    std::ostringstream conf;
+    if(ok && rep.lp_ran && lp_name == "default")
+    {
+      namespace SB = swn_bench;
+      double total_area = 0;
+      for(double a : area) total_area += a;
+      auto err = [&](const std::vector<int>& L) { return error_percent(m, area, L, gt_t); };
+      const std::vector<double> weight = SB::eq11_weights(m, chain_t, epsilon);
+      const SB::Cells cells = SB::label_cells(m, chain_t, G_t, W, area);
+      const std::vector<SB::Flip> flips = SB::flip_costs(m, cells, chain_t, G_t, weight);
+      std::vector<std::size_t> largest(m.n_components, std::size_t(-1));
+      for(std::size_t c = 0; c < cells.area.size(); ++c)
+        if(largest[cells.component[c]] == std::size_t(-1) || cells.area[c] > cells.area[largest[cells.component[c]]]) largest[cells.component[c]] = c;
+      const std::vector<long> off = SB::best_offsets(m, area, W, gt_t);
+      std::vector<char> wrong(m.nf, 0);
+      std::vector<double> cell_wrong(cells.area.size(), 0.);
+      for(std::size_t f = 0; f < m.nf; ++f)
+        if(long(W[f]) - long(gt_t[f]) != off[m.face_component[f]]) { wrong[f] = 1; cell_wrong[cells.of_face[f]] += area[f]; }
+      std::size_t least = std::size_t(-1), worst = 0, eligible = 0;
+      for(std::size_t c = 0; c < cells.area.size(); ++c)
+      {
+        if(cell_wrong[c] > cell_wrong[worst]) worst = c;
+        if(c == largest[cells.component[c]] || cells.area[c] < 0.005 * total_area) continue;
+        ++eligible;
+        if(least == std::size_t(-1) || flips[c].cost < flips[least].cost) least = c;
+      }
+      // decomposition check: input = J W + G on every interior edge where the input is complete
+      std::size_t mismatch = 0;
+      for(const SI::Arc& a : m.arcs)
+        mismatch += std::lround(chain_t[a.edge]) != long(W[a.left_side / 3]) - long(W[a.right_side / 3]) + G_t[a.edge];
+      conf << ", \"decomposition_mismatch_edges\": " << mismatch << ", \"cells\": " << cells.area.size()
+           << ", \"cells_eligible\": " << eligible;
+      if(least != std::size_t(-1) && std::isfinite(flips[least].cost))
+      {
+        std::vector<int> W2 = W;
+        for(std::size_t f = 0; f < m.nf; ++f)
+          if(cells.of_face[f] == least) W2[f] += flips[least].delta;
+        conf << ", \"min_flip_cost\": " << flips[least].cost << ", \"min_flip_boundary\": " << flips[least].boundary
+             << ", \"min_flip_area_percent\": " << 100. * cells.area[least] / total_area
+             << ", \"error_second_best\": " << err(W2)
+             << ", \"error_hint_least_confident\": " << err(SB::relabel_cell(m, cells, least, area, W, gt_t));
+      }
+      conf << ", \"worst_cell_wrong_percent\": " << 100. * cell_wrong[worst] / total_area
+           << ", \"worst_cell_flip_cost\": " << (std::isfinite(flips[worst].cost) ? flips[worst].cost : -1.)
+           << ", \"error_hint_largest_mislabeled\": " << err(SB::relabel_cell(m, cells, worst, area, W, gt_t));
+      // the user redraws one missing piece of the input: re-solve
+      std::vector<long> full(m.ne, 0);
+      for(const SI::Arc& a : m.arcs) full[a.edge] = long(gt_t[a.left_side / 3]) - long(gt_t[a.right_side / 3]);
+      for(std::size_t e = 0; e < m.ne; ++e) full[e] += P_t[e];
+      const std::vector<std::size_t> run = SB::missing_run_hint(m, full, chain_t, wrong, area);
+      double hint_err = err(W);
+      if(!run.empty())
+      {
+        std::vector<char> in_run(m.ne, 0);
+        for(std::size_t e : run) in_run[e] = 1;
+        auto chain2 = mesh.add_property_map<Mesh::Edge_index, int>("e:chain_hint", 0).first;
+        auto W3 = mesh.add_property_map<Mesh::Face_index, int>("f:W_hint", 0).first;
+        for(auto e : mesh.edges())
+          chain2[e] = in_run[solver.edge_index(e)] ? int(full[solver.edge_index(e)]) : chain[e];
+        if(solver.solve(chain2, W3, SWN::parameters::epsilon(epsilon)))
+        {
+          std::vector<int> Wh(m.nf);
+          for(auto f : mesh.faces()) Wh[solver.face_index(f)] = W3[f];
+          hint_err = err(Wh);
+        }
+      }
+      conf << ", \"hint_run_edges\": " << run.size() << ", \"error_hint_missing_run\": " << hint_err;
+    }
+
     out << "{\"ok\": " << (ok ? "true" : "false");
     if(!ok) out << ", \"error\": \"" << rep.error << "\"";
     out << ", \"lp_backend\": \"" << lp_backend << "\", \"epsilon\": " << epsilon;
@@ -338,6 +415,7 @@ int main(int argc, char** argv)
         << ", \"time_total\": " << rep.time_total << ", \"time_swn\": " << t_construct + rep.time_total
         << ", \"time_naive\": " << t_naive << ", \"peak_rss_mb\": " << double(rss_after_swn) / 1024.
         << ", \"peak_rss_mb_all\": " << double(peak_rss_kb()) / 1024.;
+    out << conf.str();
     if(check_api) out << ", \"api_match\": " << (api_match ? "true" : "false") << ", \"time_api\": " << t_api;
     out << "}";
   }
