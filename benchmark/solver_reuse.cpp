@@ -1,8 +1,9 @@
 // Many closed curves on one mesh with the solver class: what the kept factorization saves.
 //
-//   solver_reuse MESH N
+//   solver_reuse MESH N [broken]
 //
-// Solves N small closed loops (the links of N vertices spread over the mesh) one after the other with
+// Solves N small closed loops (the links of N vertices spread over the mesh; with `broken`, each with one
+// edge left out, so that it has two interior endpoints) one after the other with
 // one Surface_winding_numbers_solver and prints, per solve, whether the jump Laplacian's factorization
 // was kept from an earlier solve (Solve_report::jump_laplacian_reused) and the report's timings. Not a
 // test: see RESULTS.md ("Speed") for the numbers. Build (from the repository root):
@@ -21,6 +22,7 @@
 #include <cstdlib>
 #include <iostream>
 #include <iterator>
+#include <string>
 #include <vector>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -32,10 +34,11 @@ int main(int argc, char** argv)
   Mesh m;
   if(argc < 3 || !CGAL::IO::read_polygon_mesh(argv[1], m) || is_empty(m))
   {
-    std::cerr << "usage: solver_reuse MESH N (MESH: a triangle mesh CGAL can read)\n";
+    std::cerr << "usage: solver_reuse MESH N [broken] (MESH: a triangle mesh CGAL can read)\n";
     return 1;
   }
   const int n = std::atoi(argv[2]);
+  const bool broken = argc > 3 && std::string(argv[3]) == "broken";
   SWN::Surface_winding_numbers_solver<Mesh> solver(m);
   auto labels = get(CGAL::dynamic_face_property_t<int>(), m);
   for(int k = 0; k < n; ++k)
@@ -46,7 +49,7 @@ int main(int argc, char** argv)
     for(auto e : edges(m)) put(chain, e, 0);
     std::vector<Mesh::Vertex_index> link;
     for(auto h : halfedges_around_target(halfedge(v, m), m)) link.push_back(source(h, m));
-    link.push_back(link.front());
+    if(!broken) link.push_back(link.front());
     SWN::add_vertex_polyline_to_chain(m, link, chain);
     const auto t0 = std::chrono::steady_clock::now();
     const bool ok = solver.solve(chain, labels);

@@ -106,6 +106,11 @@ connected component, the label covering the largest area is 0.
     \cgalParamType{Boolean}
     \cgalParamDefault{`false`}
   \cgalParamNEnd
+  \cgalParamNBegin{Surface_winding_numbers::parameters::filter_nonbounding_loops}
+    \cgalParamDescription{`false`: the labels are the rounded jump-harmonic function u (with the shift of the paper's Sec. 3.5.1), without the filtering of the nonbounding part of the curves (the paper's Fig. 27): a loop around a handle then splits the surface along itself and along a contour of u that is not in the input; G and g are zero, and the solve is one jump-Laplace solve on any surface}
+    \cgalParamType{Boolean}
+    \cgalParamDefault{`true`}
+  \cgalParamNEnd
   \cgalParamNBegin{Surface_winding_numbers::parameters::concurrent_factorizations}
     \cgalParamDescription{when the curve has interior endpoints on a mesh with handles, computes the per-mesh part of the Hodge projection (the harmonic basis, or the factorized 2-form Laplacian on meshes with more than 24 homology classes) on a second thread (`std::async`) while the first jump-Laplace system is factorized and solved; same results either way. Set it to `false` if the sparse linear solver cannot run two factorizations at once}
     \cgalParamType{Boolean}

@@ -20,6 +20,7 @@
 
 #include "swn_io/atomic_output_dir.h"
 #include "swn_io/conforming_cut.h"
+#include "swn_io/curves_off_mesh.h"
 #include "swn_io/json.h"
 #include "swn_io/read_curves.h"
 #include "swn_io/read_mesh.h"
@@ -58,6 +59,12 @@ static const char* usage =
   "  --curve FILE           curve file: the authors' format (v / e / l / c / #offset lines), or a file whose\n"
   "                         first line is `# swn polylines` (0-based vertex polylines, one per line) or\n"
   "                         `# swn halfedges` (lines `h SRC DST [multiplicity]`)\n"
+  "  --polylines FILE       3D polylines (OBJ `v X Y Z` and 1-based `l` records) drawn off the mesh: each\n"
+  "                         point is projected onto the surface (farther than the mean edge length: a gap),\n"
+  "                         consecutive points are joined by a straight walk through faces\n"
+  "  --stamp FILE.svg       a 2D drawing (SVG path with M/L/H/V/Z, polyline, polygon, line) stamped onto the\n"
+  "                         mesh along --direction, centred and scaled to 80 % of the mesh's extent\n"
+  "  --direction X,Y,Z      the direction the drawing is stamped along (default 0,0,-1)\n"
   "  --output-dir DIR       write labels.txt, mesh.ply, w.obj, bounding.obj, nonbounding.obj,\n"
   "                         completed.obj and summary.json to DIR (created; written atomically)\n"
   "  --epsilon X            relative cost of residual jumps across the curve (default 0.01)\n"
@@ -67,6 +74,8 @@ static const char* usage =
   "                         glpk (simplex)\n"
   "  --reduced-residual     approximate the residual LP by the paper's reduced problem (Sec. 6): gaps\n"
   "                         closed by shortest paths, one shift per region (faster, approximate)\n"
+  "  --no-nonbounding-filter  label by rounding the jump-harmonic function u itself (paper Fig. 27): loops\n"
+  "                         around handles are completed by contours of u instead of being filtered out\n"
   "  --sequential           use one thread: factorize the Hodge projection's matrix after the first\n"
   "                         solve and write w.obj after the other files (default: both on a second\n"
   "                         thread, during the first solve and while the other files are written)\n"
@@ -109,6 +118,7 @@ struct Options
   std::string lp_solver = "glpk";
 #endif
   std::string mesh, curve, output_dir;
+  SIO::Off_mesh_curves off_mesh;
 #ifdef CGAL_SWN_USE_CHOLMOD
   std::string linear_solver = "cholmod";
 #else
@@ -116,6 +126,7 @@ struct Options
 #endif
   double epsilon = 0.01;
   bool quiet = false, verbose = false, help = false, reduced_residual = false, sequential = false;
+  bool unfiltered = false;   // --no-nonbounding-filter
 };
 
 Options parse_arguments(int argc, char** argv)
@@ -135,11 +146,24 @@ Options parse_arguments(int argc, char** argv)
     if(a == "--help" || a == "-h") o.help = true;
     else if(a == "--curve") o.curve = next();
     else if(a == "--output-dir") o.output_dir = next();
+    else if(a == "--polylines") o.off_mesh.polylines_file = next();
+    else if(a == "--stamp") o.off_mesh.stamp_file = next();
+    else if(a == "--direction")
+    {
+      const std::string v = next();
+      std::istringstream in(v);
+      char c1 = 0, c2 = 0;
+      auto& d = o.off_mesh.direction;
+      if(!(in >> d[0] >> c1 >> d[1] >> c2 >> d[2]) || c1 != ',' || c2 != ',' || !in.eof() ||
+         !std::isfinite(d[0] + d[1] + d[2]) || d[0] * d[0] + d[1] * d[1] + d[2] * d[2] == 0)
+        throw Usage_error("--direction needs three numbers X,Y,Z, not all zero, got '" + v + "'");
+    }
     else if(a == "--lp-solver") o.lp_solver = next();
     else if(a == "--linear-solver") o.linear_solver = next();
     else if(a == "--quiet") o.quiet = true;
     else if(a == "--verbose") o.verbose = true;
     else if(a == "--reduced-residual") o.reduced_residual = true;
+    else if(a == "--no-nonbounding-filter") o.unfiltered = true;
     else if(a == "--sequential") o.sequential = true;
     else if(a == "--epsilon")
     {
@@ -304,8 +328,9 @@ int main(int argc, char** argv)
       if(SIO::has_curve_records(info)) curves.push_back(SIO::curve_set_from_obj(info, soup));
       if(!opt.curve.empty()) curves.push_back(SIO::read_curve_file(opt.curve, soup));
     }
-    if(curves.empty())
-      throw SIO::Input_error(opt.mesh, 0, "no curve: give --curve FILE, or `l` lines in an OBJ mesh");
+    SIO::read_off_mesh_curves(opt.off_mesh);
+    if(curves.empty() && opt.off_mesh.empty())
+      throw SIO::Input_error(opt.mesh, 0, "no curve: give --curve FILE, --polylines FILE, --stamp FILE, or `l` lines in an OBJ mesh");
     t_read = seconds_since(t0);
     bool dual_chains = false;
     for(const SIO::Curve_set& c : curves) dual_chains = dual_chains || !c.dual_pairs.empty();
@@ -315,12 +340,20 @@ int main(int argc, char** argv)
       for(const SIO::Curve_set& c : curves) SIO::internal::validate_soup_curve_set(c, soup, edges);
       not_a_mesh = "the curve has dual chains (c records)";
     }
+    if(!not_a_mesh.empty() && !opt.off_mesh.empty())
+      throw SIO::Input_error(opt.off_mesh.polylines_file.empty() ? opt.off_mesh.stamp_file : opt.off_mesh.polylines_file, 0,
+                             "curves off the mesh need a triangle mesh to cut, and " + opt.mesh + " is solved as a soup (" +
+                             not_a_mesh + ")");
     if(!not_a_mesh.empty())
       return run_on_soup(opt, soup, info, curves, not_a_mesh, t_start, t_read);
     soup = SIO::Triangle_soup();
     log("read " + std::to_string(num_vertices(input)) + " vertices, " + std::to_string(num_faces(input)) + " faces");
     t0 = std::chrono::steady_clock::now();
     cut = SIO::conforming_cut(input, curves);
+    if(!opt.off_mesh.empty())
+      SIO::add_off_mesh_curves(cut, opt.off_mesh, [&](const std::string& w) {
+        if(!opt.quiet) std::cerr << "swn: warning: " << w << "\n";
+      });
     input = Mesh();   // the run goes on with the cut's copy: free the input's memory now
     curves.clear();
     t_cut = seconds_since(t0);
@@ -357,9 +390,10 @@ int main(int argc, char** argv)
       SWN::parameters::winding_number_map(w, SWN::parameters::nonbounding_chain_map(G,
       SWN::parameters::nonbounding_chain_real_map(g, SWN::parameters::bounding_chain_map(B,
       SWN::parameters::epsilon(opt.epsilon, SWN::parameters::use_reduced_residual(opt.reduced_residual,
+      SWN::parameters::filter_nonbounding_loops(!opt.unfiltered,
       SWN::parameters::concurrency(!opt.sequential,
       SWN::parameters::lp_solver(std::ref(lp),
-      SWN::parameters::report(std::ref(report))))))))))
+      SWN::parameters::report(std::ref(report)))))))))))
         .verbose(opt.verbose).sparse_linear_solver(sparse_solver));
   });
   if(!ok)

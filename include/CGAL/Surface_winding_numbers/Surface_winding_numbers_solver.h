@@ -199,7 +199,7 @@ bool run_and_report(Solve_report& rep, F f)
 }
 
 // One solve of `chain` (per table edge) with the settings of the named parameters: epsilon,
-// verbose, use_reduced_residual, concurrency, keep_hodge_factorization and lp_solver.
+// verbose, use_reduced_residual, concurrency, keep_hodge_factorization, filter_nonbounding_loops and lp_solver.
 template <class LA, class NamedParameters>
 Core_result solve_with_parameters(Winding_number_core<LA>& core, const std::vector<double>& chain,
                                   const NamedParameters& np, Solve_report& rep)
@@ -214,6 +214,7 @@ Core_result solve_with_parameters(Winding_number_core<LA>& core, const std::vect
   options.reduced_residual = choose_parameter(get_parameter(np, snp::use_reduced_residual), false);
   options.concurrent = allows_threads(choose_parameter(get_parameter(np, snp::concurrency), CGAL::Parallel_tag()));
   options.keep_hodge_factorization = choose_parameter(get_parameter(np, snp::keep_hodge_factorization), true);
+  options.filter_nonbounding = choose_parameter(get_parameter(np, snp::filter_nonbounding_loops), true);
   if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, snp::lp_solver_t>::value)
   {
     Default_linear_program_traits lp;
@@ -330,7 +331,7 @@ public:
   \param label_map receives the winding number label W of every face
   \param np optional named parameters among `nonbounding_chain_map`, `nonbounding_chain_real_map`,
          `bounding_chain_map`, `winding_number_map`, `epsilon`, `lp_solver`, `use_reduced_residual`,
-         `concurrency`, `keep_hodge_factorization`, `report`, `verbose`
+         `filter_nonbounding_loops`, `concurrency`, `keep_hodge_factorization`, `report`, `verbose`
          (see `CGAL::surface_winding_numbers()`).
   \pre `chain_map`, `label_map` and the output maps of `np` have a value for every element of `tm` they
        are keyed by. A `Surface_mesh` property map with fewer entries (a map of another mesh) is detected:

@@ -23,6 +23,8 @@ enum keep_hodge_factorization_t { keep_hodge_factorization };
 enum report_t { report };
 enum refine_short_pieces_t { refine_short_pieces };
 enum minimum_piece_edges_t { minimum_piece_edges };
+enum projection_tolerance_t { projection_tolerance };
+enum filter_nonbounding_loops_t { filter_nonbounding_loops };
 enum dual_chain_t { dual_chain };
 } // namespace internal_np
 /// \endcond
@@ -89,6 +91,12 @@ CGAL_SWN_NAMED_PARAMETER(concurrency_t, concurrency)
 /// freed as soon as the harmonic part is computed, before the residual step, whose arrays then reuse
 /// its memory. Same results either way
 CGAL_SWN_NAMED_PARAMETER(keep_hodge_factorization_t, keep_hodge_factorization)
+/// `true` (the default): the curves' nonbounding part is filtered out (Hodge projection, residual problem)
+/// and returned as G; `false`: the labels are the rounded jump-harmonic function u of the curves, with the
+/// shift of the paper's Sec. 3.5.1 (the paper's Fig. 27): a loop around a handle then splits the surface
+/// along itself and along a contour of u that does not belong to the input, G and g are zero, and the solve
+/// is one jump-Laplace solve on any surface
+CGAL_SWN_NAMED_PARAMETER(filter_nonbounding_loops_t, filter_nonbounding_loops)
 /// @}
 /// \name Settings of `conforming_cut()`
 /// @{
@@ -98,6 +106,12 @@ CGAL_SWN_NAMED_PARAMETER(refine_short_pieces_t, refine_short_pieces)
 /// chain pieces with fewer edges than this (default 8) that end at an interior endpoint are refined
 CGAL_SWN_NAMED_PARAMETER(minimum_piece_edges_t, minimum_piece_edges)
 CGAL_SWN_NAMED_PARAMETER(dual_chain_t, dual_chain)
+/// @}
+/// \name Settings of `polylines_to_chain()`
+/// @{
+
+/// points of a polyline farther than this from the surface make gaps (default: the mean edge length)
+CGAL_SWN_NAMED_PARAMETER(projection_tolerance_t, projection_tolerance)
 /// @}
 
 #undef CGAL_SWN_NAMED_PARAMETER

@@ -64,7 +64,8 @@ lives on the input's polygons, corners and edges.
        parameter `dual_chain`.
 \param labels receives W for every polygon
 \param np an optional sequence of named parameters: those of `CGAL::surface_winding_numbers()` (`epsilon`,
-       `lp_solver`, `use_reduced_residual`, `concurrency`, `report`, `verbose`, `sparse_linear_solver`), and
+       `lp_solver`, `use_reduced_residual`, `filter_nonbounding_loops`, `concurrency`, `report`, `verbose`,
+       `sparse_linear_solver`), and
        `dual_chain`: a range of pairs `(a, b)` of polygon indices (as `std::pair` or `std::array`), each
        adding a jump of +1 from polygon `a` into polygon `b` across the edge they share (paper Sec. 3.7, the
        input of choice on nonorientable surfaces), added to `curve`; with

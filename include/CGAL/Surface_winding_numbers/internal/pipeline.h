@@ -42,6 +42,7 @@ struct Solve_options
   bool reduced_residual = false;   // paper Sec. 6 instead of the exact Eq. 11
   bool concurrent = true;   // a second thread (named parameter concurrency): the Hodge projection's per-mesh part, the residual solver's
   bool keep_hodge_factorization = true;    // false: freed after the harmonic part, before the residual
+  bool filter_nonbounding = true;   // false: the labels contour u itself (paper Sec. 5.5, Fig. 27), no G
   std::size_t harmonic_basis_max_classes = internal::harmonic_basis_max_classes;   // else the 2-form Laplacian
 };
 
@@ -151,7 +152,8 @@ public:
                 << rep.curve_edges << " curve edges, " << rep.interior_endpoints << " interior endpoints\n";
 
     Core_result r;
-    rep.homology_correction = !m_.all_components_disks_or_spheres();
+    // without the filtering of nonbounding loops, w = u as on disks and spheres (the paper's Fig. 27)
+    rep.homology_correction = options.filter_nonbounding && !m_.all_components_disks_or_spheres();
     const bool open_curve = rep.interior_endpoints > 0;   // the homology correction needs the Hodge projection
     // The Hodge projection does not depend on the curve: when it will be needed, the harmonic basis
     // (or the 2-form Laplacian) is computed on a second thread while this one solves for u. Its time
