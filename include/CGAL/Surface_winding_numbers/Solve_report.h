@@ -79,9 +79,13 @@ struct Solve_report
   bool hodge_projection = false;     ///< `true` when the harmonic part was projected (open curves)
   bool reduced_residual = false;     ///< the residual came from the reduced problem of Sec. 6
   bool lp_ran = false;               ///< the residual function (Eq. 11) was computed
-  /// `true` when the jump Laplacian's factorization was kept from an earlier solve on the same mesh
-  /// (a curve without interior endpoints, whose jump Laplacian is the mesh's 0-form Laplacian)
+  /// `true` when the jump Laplacian was not factorized for this curve: the solver's kept
+  /// factorization of the mesh's 0-form Laplacian served, as it is (a curve without interior
+  /// endpoints) or with a low-rank update for the interior endpoints (`jump_laplacian_update_rank`)
   bool jump_laplacian_reused = false;
+  /// the rank of that update: the interior endpoints and their neighbours (0 without one). Above
+  /// 96, and where taking the endpoints out splits a component, the jump Laplacian is factorized anew
+  std::size_t jump_laplacian_update_rank = 0;
   /// @}
   /// \name Residual linear program and weights
   /// @{

@@ -5,9 +5,11 @@
 #define CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_JUMP_LAPLACE_H
 
 #include <CGAL/Surface_winding_numbers/internal/mesh_tables.h>
+#include <CGAL/assertions.h>
 
 #ifdef CGAL_EIGEN3_ENABLED
 #include <Eigen/Core>
+#include <Eigen/LU>
 #endif
 
 #include <algorithm>
@@ -253,6 +255,30 @@ private:
 // 94k vertices), which larger meshes feel more than the page faults.
 constexpr std::size_t vertex_laplace_block = 8;
 
+// The unknowns of the jump Laplacian on V* = vertices minus `excluded`: dof[v] is v's unknown, npos at
+// excluded vertices, at vertices of no face and at one pinned vertex per connected component of V*
+// (its representative in a union-find of V*'s edges). Unknowns follow `order` if given and not
+// empty, else the vertices. Returns their number.
+inline std::size_t number_jump_laplace_unknowns(const Mesh_tables& m, const std::vector<char>& excluded,
+                                                const std::vector<std::size_t>* order, std::vector<std::size_t>& dof)
+{
+  Union_find sets(m.nv);
+  for(std::size_t s = 0; s < 3 * m.nf; ++s)
+    if(!excluded[m.tail(s)] && !excluded[m.head(s)]) sets.unite(m.tail(s), m.head(s));
+  dof.assign(m.nv, npos);
+  std::size_t n = 0;
+  for(std::size_t k = 0; k < m.nv; ++k)
+  {
+    const std::size_t v = order && !order->empty() ? (*order)[k] : k;
+    if(!excluded[v] && m.vertex_component[v] != npos && sets.find(v) != v) dof[v] = n++;   // roots are pinned
+  }
+  return n;
+}
+
+// The largest update of exclude_by_update(): its |T| columns are solved in blocks of
+// vertex_laplace_block, which must cost less than the factorization they replace.
+constexpr std::size_t jump_laplacian_max_update_rank = 96;
+
 // The jump Laplace system (paper Eqs. 6-8, 10) on V* = vertices minus interior endpoints. The
 // constant null space of every connected component of V* is removed exactly by pinning the
 // component's first vertex (u0 = 0 there), so the matrix is positive definite and b needs no
@@ -273,17 +299,8 @@ public:
     m_ = &m;
     weight_ = &weight;
     excluded_ = excluded;
-    // components of the V* graph, to pin one vertex each
-    Union_find sets(m.nv);
-    for(std::size_t s = 0; s < 3 * m.nf; ++s)
-      if(!excluded[m.tail(s)] && !excluded[m.head(s)]) sets.unite(m.tail(s), m.head(s));
-    dof_.assign(m.nv, npos);
-    std::size_t n = 0;
-    for(std::size_t k = 0; k < m.nv; ++k)
-    {
-      const std::size_t v = order && !order->empty() ? (*order)[k] : k;
-      if(!excluded[v] && m.vertex_component[v] != npos && sets.find(v) != v) dof_[v] = n++;   // roots are pinned
-    }
+    update_.reset();
+    const std::size_t n = number_jump_laplace_unknowns(m, excluded, order, dof_);
     n_ = n;
     la_.reset(new LA());
     if(n == 0) return;
@@ -334,6 +351,15 @@ public:
       Vector b = jump_laplace_rhs(c);
       Vector x(static_cast<int>(n_));
       if(!la_->linear_solver(b, x)) throw Solver_failure("jump Laplace solve failed");
+      if(update_)   // A* x = b with A* = A + P M P^T: x = A^-1 (b - P M q), (I + Z_T M) q = (A^-1 b)_T
+      {
+        const std::vector<std::size_t>& T = update_->dofs;
+        Eigen::VectorXd yT(Eigen::Index(T.size()));
+        for(std::size_t i = 0; i < T.size(); ++i) yT[Eigen::Index(i)] = x[T[i]];
+        const Eigen::VectorXd Mq = update_->M * update_->K.solve(yT);
+        for(std::size_t i = 0; i < T.size(); ++i) b[T[i]] -= Mq[Eigen::Index(i)];
+        if(!la_->linear_solver(b, x)) throw Solver_failure("jump Laplace solve failed");
+      }
       for(std::size_t v = 0; v < m.nv; ++v)
         if(dof_[v] != npos)
         {
@@ -357,6 +383,7 @@ public:
   template <class Rhs>
   std::vector<double> solve_vertex_laplace(std::size_t k, const Rhs& rhs, Shared_work* share = nullptr) const
   {
+    CGAL_precondition(!update_);   // the 0-form Laplacian, not an updated copy
     const Mesh_tables& m = *m_;
     std::vector<double> x(m.nv * k, 0.);
     if(n_ == 0 || k == 0) return x;
@@ -392,6 +419,86 @@ public:
   bool factorized() const { return la_ != nullptr; }
   // true if the system was built with exactly these excluded vertices
   bool excludes(const std::vector<char>& excluded) const { return la_ != nullptr && excluded_ == excluded; }
+  // |T| of exclude_by_update(), 0 if the system is factorized as it is
+  std::size_t update_rank() const { return update_ ? update_->dofs.size() : 0; }
+
+  // Turns a copy of the factorized 0-form Laplacian (no vertex excluded) into the jump Laplacian of
+  // V* = vertices minus `excluded` (paper Eq. 8) without a new factorization. With an identity row
+  // for each excluded vertex, that system A* differs from the 0-form Laplacian A only on the rows and
+  // columns T of the excluded vertices and of their neighbours: A* = A + P M P^T (P: the columns of
+  // the identity at T), solved with A's factorization by the Woodbury identity: (I + Z_T M) q = (A^-1 b)_T,
+  // then x = A^-1 (b - P M q), where Z_T = P^T A^-1 P takes |T| solves here and every solve two.
+  // Returns false, the system unchanged, when |T| > max_rank or when V* needs other pinned vertices
+  // than A's (a component's pinned vertex excluded, or a component split by the excluded vertices).
+  bool exclude_by_update(const std::vector<char>& excluded, std::size_t max_rank = jump_laplacian_max_update_rank)
+  {
+    CGAL_precondition(la_ != nullptr && !update_ && std::count(excluded_.begin(), excluded_.end(), char(1)) == 0);
+    const Mesh_tables& m = *m_;
+    std::vector<std::size_t> dof_star;
+    const std::size_t n_star = number_jump_laplace_unknowns(m, excluded, nullptr, dof_star);
+    std::size_t vertices = 0, vertices_star = 0;
+    for(std::size_t v = 0; v < m.nv; ++v)
+    {
+      if(m.vertex_component[v] == npos) continue;
+      ++vertices;
+      if(excluded[v] && dof_[v] == npos) return false;   // a pinned vertex is excluded
+      if(!excluded[v]) ++vertices_star;
+    }
+    if(vertices_star - n_star != vertices - n_) return false;   // not as many components of V* as of the mesh
+    // T and M: the edges at excluded vertices removed, an identity row for each excluded vertex
+    std::vector<double> edge_weight(m.ne, 0.);   // summed as in jump_laplacian(): the same bits
+    for(std::size_t s = 0; s < 3 * m.nf; ++s)
+      if(excluded[m.tail(s)] || excluded[m.head(s)]) edge_weight[m.fe[s]] += (*weight_)[s];
+    std::vector<std::size_t> local(n_, npos), T;
+    const auto index = [&](std::size_t v) {
+      const std::size_t d = dof_[v];
+      if(d == npos) return npos;
+      if(local[d] == npos) { local[d] = T.size(); T.push_back(d); }
+      return local[d];
+    };
+    std::vector<std::pair<std::size_t, std::size_t>> removed;   // local indices of the removed edges' ends
+    for(std::size_t e = 0; e < m.ne; ++e)
+      if(edge_weight[e] != 0) removed.emplace_back(index(m.ev[2 * e]), index(m.ev[2 * e + 1]));
+    for(std::size_t v = 0; v < m.nv; ++v)
+      if(excluded[v]) index(v);
+    if(T.size() > max_rank) return false;
+    const Eigen::Index t = Eigen::Index(T.size());
+    std::shared_ptr<Update> update = std::make_shared<Update>();
+    update->M.setZero(t, t);
+    std::size_t k = 0;
+    for(std::size_t e = 0; e < m.ne; ++e)
+    {
+      if(edge_weight[e] == 0) continue;
+      const double w = edge_weight[e];
+      const Eigen::Index i = Eigen::Index(removed[k].first), j = Eigen::Index(removed[k].second);
+      ++k;
+      if(i != Eigen::Index(npos)) update->M(i, i) -= w;
+      if(j != Eigen::Index(npos)) update->M(j, j) -= w;
+      if(i != Eigen::Index(npos) && j != Eigen::Index(npos)) { update->M(i, j) += w; update->M(j, i) += w; }
+    }
+    for(std::size_t v = 0; v < m.nv; ++v)
+      if(excluded[v]) update->M(Eigen::Index(local[dof_[v]]), Eigen::Index(local[dof_[v]])) += 1;
+    // Z_T, in blocks of columns
+    Eigen::MatrixXd ZT(t, t);
+    Column_solver<LA> solver;
+    std::vector<double> B;
+    for(std::size_t j0 = 0; j0 < T.size(); j0 += vertex_laplace_block)
+    {
+      const std::size_t kb = (std::min)(vertex_laplace_block, T.size() - j0);
+      B.assign(n_ * kb, 0.);
+      for(std::size_t j = 0; j < kb; ++j) B[j * n_ + T[j0 + j]] = 1;
+      const double* X = solver.solve(*la_, B, n_, kb);
+      if(X == nullptr) throw Solver_failure("jump Laplace solve failed");
+      for(std::size_t j = 0; j < kb; ++j)
+        for(std::size_t i = 0; i < T.size(); ++i) ZT(Eigen::Index(i), Eigen::Index(j0 + j)) = X[j * n_ + T[i]];
+    }
+    update->K.compute(Eigen::MatrixXd::Identity(t, t) + ZT * update->M);
+    if(!(update->K.rcond() > 1e-12)) return false;   // A* singular or nearly: factorize V* anew
+    update->dofs = std::move(T);
+    update_ = std::move(update);
+    excluded_ = excluded;
+    return true;
+  }
 
 private:
   // columns j0 .. j0 + kb - 1 of solve_vertex_laplace() into x; b: nv zeros (kept so), B: scratch
@@ -429,8 +536,17 @@ private:
   std::vector<char> excluded_;
   std::vector<std::size_t> dof_;
   std::size_t n_ = 0;
-  std::unique_ptr<Matrix> A_;   // LA::factor keeps a pointer to the matrix: keep it alive
-  std::unique_ptr<LA> la_;
+  // shared by the copies that exclude_by_update() turns into other systems
+  std::shared_ptr<Matrix> A_;   // LA::factor keeps a pointer to the matrix: keep it alive
+  std::shared_ptr<LA> la_;
+  // the low-rank update of exclude_by_update(): the unknowns T it touches, M, and the LU of I + Z_T M
+  struct Update
+  {
+    std::vector<std::size_t> dofs;
+    Eigen::MatrixXd M;
+    Eigen::PartialPivLU<Eigen::MatrixXd> K;
+  };
+  std::shared_ptr<const Update> update_;
 };
 
 } // namespace internal

@@ -162,6 +162,7 @@ public:
     // after that factorization (the second thread's work is the longer one); they count in the Hodge step.
     // Once this thread has solved for u, it takes its share of the basis's many-column solve.
     compute_vertex_order();   // read by both threads
+    keep_0form_laplacian_ = options.keep_hodge_factorization;
     Shared_work basis_solves;   // outlives the second thread (the future below joins it first)
     std::future<void> hodge_factorization;
     double time_order = 0, time_generators = 0;   // counted in the jump Laplace step and the Hodge step
@@ -196,18 +197,25 @@ public:
     // u: jump Laplace solve (Eq. 10) with jumps Gamma. Without interior endpoints the jump Laplacian
     // is the 0-form Laplacian, the same for every such curve: kept from an earlier solve if there is one.
     // (The second thread only reads laplacian_, and runs only for curves with interior endpoints.)
-    std::shared_ptr<Jump_laplace_system<LA>> kept = open_curve ? nullptr : laplacian_;
-    rep.jump_laplacian_reused = kept && kept->excludes(endpoint);
-    const std::shared_ptr<Jump_laplace_system<LA>> Lp =
-      rep.jump_laplacian_reused ? kept : std::make_shared<Jump_laplace_system<LA>>();
+    // With interior endpoints and the solver class's kept factorizations, the kept 0-form Laplacian
+    // with a low-rank update for the endpoints, unless the second thread is using it.
+    bool kept = false;
+    std::shared_ptr<Jump_laplace_system<LA>> Lp =
+      open_curve ? updated_0form_laplacian(endpoint, options.keep_hodge_factorization && !hodge_factorization.valid(), kept)
+                 : (laplacian_ && laplacian_->excludes(endpoint) ? laplacian_ : nullptr);
+    rep.jump_laplacian_reused = open_curve ? kept : Lp != nullptr;
+    if(!Lp) Lp = std::make_shared<Jump_laplace_system<LA>>();
     Jump_laplace_system<LA>& L = *Lp;
     r.u = first_jump_laplace_solve(chain, endpoint, L);
+    rep.jump_laplacian_update_rank = L.update_rank();
     if(!open_curve) laplacian_ = options.keep_hodge_factorization ? Lp : nullptr;
     rep.time_jump_laplace = clock.lap() + time_order;
     if(verbose)
       std::cerr << "[swn] jump Laplace solve (" << L.size() << " unknowns"
-                << (rep.jump_laplacian_reused ? ", factorization kept from an earlier solve" : "") << "): "
-                << rep.time_jump_laplace << " s\n";
+                << (rep.jump_laplacian_update_rank ? ", kept 0-form Laplacian with a rank-" + std::to_string(L.update_rank()) +
+                                                     " update for the endpoints"
+                                                   : rep.jump_laplacian_reused ? ", factorization kept from an earlier solve" : "")
+                << "): " << rep.time_jump_laplace << " s\n";
 
     rep.hodge_projection = false;
     rep.lp_ran = false;
@@ -304,6 +312,27 @@ public:
     return n;
   }
 
+  // The jump Laplacian of a curve with interior endpoints as the kept 0-form Laplacian with a low-rank
+  // update (Jump_laplace_system::exclude_by_update), or nullptr (then factorized anew). With `keep`,
+  // the 0-form Laplacian is factorized and kept if it is not there yet: the next curves need it too.
+  // `kept`: the update used a factorization from an earlier solve.
+  std::shared_ptr<Jump_laplace_system<LA>> updated_0form_laplacian(const std::vector<char>& endpoint, bool keep, bool& kept)
+  {
+    kept = false;
+    if(!keep) return nullptr;
+    const bool earlier = laplacian_ != nullptr;
+    if(!earlier)
+    {
+      compute_vertex_order();
+      laplacian_ = std::make_shared<Jump_laplace_system<LA>>();
+      laplacian_->jump_laplacian(m_, weight_, std::vector<char>(m_.nv, 0), &vertex_order_);
+    }
+    std::shared_ptr<Jump_laplace_system<LA>> L = std::make_shared<Jump_laplace_system<LA>>(*laplacian_);
+    if(!L->exclude_by_update(endpoint)) return nullptr;
+    kept = earlier;
+    return L;
+  }
+
   // u of the first jump Laplace solve (Eq. 10); factorizes L (unless it is factorized already for
   // these endpoints), which the second solve reuses
   std::vector<double> first_jump_laplace_solve(const std::vector<double>& chain, const std::vector<char>& endpoint,
@@ -330,9 +359,9 @@ public:
   // `max_classes` cohomology classes, else the factorized 2-form Laplacian. Nothing if either is there.
   // The basis is built with the 0-form Laplacian, the one kept from a curve without interior endpoints
   // if there is one, and the cohomology `generators` (read once the 0-form Laplacian is factorized:
-  // they may still be computed by the other thread). A new 0-form Laplacian is not kept: held through
-  // the residual step, its memory slowed that step down (the 380-case benchmark: residual +15 %,
-  // peak +15 %, 2026-12-03).
+  // they may still be computed by the other thread). A new 0-form Laplacian is kept only when the
+  // solve keeps its factorizations (keep_0form_laplacian_): held through the residual step, its memory
+  // slowed that step down (the 380-case benchmark: residual +15 %, peak +15 %, 2026-12-03).
   void prepare_hodge_projection(std::size_t max_classes, std::shared_future<Cohomology_generators> generators,
                                 Shared_work* share = nullptr)
   {
@@ -345,6 +374,7 @@ public:
         compute_vertex_order();
         L0 = std::make_shared<Jump_laplace_system<LA>>();
         L0->jump_laplacian(m_, weight_, std::vector<char>(m_.nv, 0), &vertex_order_);
+        if(keep_0form_laplacian_) laplacian_ = L0;   // the solving thread does not read it meanwhile
       }
       const Cohomology_generators& gen = generators.get();
       if(gen.complete && gen.size() <= max_classes)
@@ -445,6 +475,7 @@ private:
   // (and then the one the harmonic basis is built with); kept between solves unless
   // keep_hodge_factorization is false
   std::shared_ptr<Jump_laplace_system<LA>> laplacian_;
+  bool keep_0form_laplacian_ = false;   // keep_hodge_factorization of the current solve
   mutable std::vector<std::size_t> border_loops_;
   mutable std::vector<std::size_t> vertex_order_;   // elimination order of the jump Laplacian (empty: by vertex)
   mutable bool vertex_order_computed_ = false;
