@@ -5,7 +5,8 @@
 // Solves N small closed loops (the links of N vertices spread over the mesh; with `broken`, each with one
 // edge left out, so that it has two interior endpoints) one after the other with
 // one Surface_winding_numbers_solver and prints, per solve, whether the jump Laplacian's factorization
-// was kept from an earlier solve (Solve_report::jump_laplacian_reused) and the report's timings. Not a
+// was kept from an earlier solve (Solve_report::jump_laplacian_reused; for broken loops, with a low-rank
+// update for their endpoints, jump_laplacian_update_rank) and the report's timings. Not a
 // test: see RESULTS.md ("Speed") for the numbers. Build (from the repository root):
 //   g++ -std=gnu++17 -O2 -DNDEBUG -frounding-math -DCGAL_EIGEN3_ENABLED -DCGAL_SWN_USE_CHOLMOD \
 //     -DCGAL_SWN_USE_LEMON -Iinclude -isystem /usr/include/eigen3 -isystem /usr/include/suitesparse \
@@ -56,7 +57,8 @@ int main(int argc, char** argv)
     const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const SWN::Solve_report& r = solver.report();
     std::cout << "solve " << k << (ok ? " ok" : " failed") << ", interior endpoints " << r.interior_endpoints
-              << ", jump Laplacian kept " << r.jump_laplacian_reused << ": jump Laplace " << r.time_jump_laplace
+              << ", jump Laplacian kept " << r.jump_laplacian_reused << " (update rank " << r.jump_laplacian_update_rank
+              << "): jump Laplace " << r.time_jump_laplace
               << " s, residual " << r.time_residual << " s, second solve " << r.time_second_solve << " s, whole " << t
               << " s\n";
   }

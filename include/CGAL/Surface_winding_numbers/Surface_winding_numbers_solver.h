@@ -246,10 +246,12 @@ coordinates, no zero-area face) and computes the cotan weights. The Hodge projec
 (a basis of the harmonic 1-forms; the factorized 2-form Laplacian on meshes with more than 24
 homology classes) is computed the first time a curve with interior endpoints needs it and then
 kept (unless `solve()` gets `keep_hodge_factorization(false)`). The jump Laplacian depends on the curve's
-interior endpoints: it is factorized once per `solve()` and used for both of its jump Laplace solves;
-for curves without interior endpoints (closed loops, and curves that end on the border) it is the
-mesh's 0-form Laplacian, the same for all of them, and its factorization is kept as well, so that
-such curves after the first cost only solves (`Solve_report::jump_laplacian_reused`).
+interior endpoints: for curves without them (closed loops, and curves that end on the border) it is the
+mesh's 0-form Laplacian, whose factorization is kept, so that such curves after the first cost only
+solves (`Solve_report::jump_laplacian_reused`). For a curve with interior endpoints (a broken stroke),
+the kept factorization serves too, with a low-rank update for the endpoints and their neighbours
+(`Solve_report::jump_laplacian_update_rank`, at most 96; beyond that, or where taking the endpoints out
+splits a component, the jump Laplacian is factorized for that curve).
 
 The mesh must not be modified while the solver is in use.
 
