@@ -143,6 +143,8 @@ def test_solver_reuse_matches_fresh_solves():
     first = [solver.solve(c) for c in curves]
     again = [solver.solve(c, concurrency=False) for c in curves]
     assert again[3].report["jump_laplacian_reused"]
+    # the broken meridian again: the kept 0-form Laplacian with an update for its two endpoints
+    assert again[0].report["jump_laplacian_reused"] and again[0].report["jump_laplacian_update_rank"] > 0
     for c, a, b in zip(curves, first, again):
         fresh = swn.winding_numbers(V, F, c)
         for res in (a, b):
