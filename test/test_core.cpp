@@ -99,32 +99,6 @@ TEST(ReducedResidual, AgreesWithTheExactResidualOnSeparatedCurves)
 // Solver (pipeline.h, the solver class and the free function, end to end)
 // =============================================================================================
 
-namespace {
-// labels and G of one solve, by the solver class or by the free function, to compare
-struct Labels_and_G
-{
-  std::map<Mesh::Face_index, int> labels;
-  std::map<Mesh::Edge_index, int> G;
-  template <class Chain, class NP = decltype(CGAL::parameters::default_values())>
-  bool solve(Solver& solver, const Chain& chain, const NP& np = CGAL::parameters::default_values())
-  {
-    return solver.solve(chain, boost::make_assoc_property_map(labels),
-                        SWN::parameters::nonbounding_chain_map(boost::make_assoc_property_map(G), np));
-  }
-  template <class Chain>
-  bool solve(const Mesh& m, const Chain& chain)
-  {
-    return CGAL::surface_winding_numbers(m, chain, boost::make_assoc_property_map(labels),
-                                         SWN::parameters::nonbounding_chain_map(boost::make_assoc_property_map(G)));
-  }
-  void expect_equal(const Labels_and_G& other) const
-  {
-    EXPECT_EQ(labels, other.labels);
-    EXPECT_EQ(G, other.G);
-  }
-};
-} // namespace
-
 TEST(Solver, ManyCurvesOnOneMeshMatchTheFreeFunction)
 {
   Mesh m;

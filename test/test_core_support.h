@@ -254,6 +254,40 @@ struct Torus_tables : Mesh_and_tables
   }
 };
 
+// labels and G of one solve, by the solver class or by the free function, to compare
+struct Labels_and_G
+{
+  std::map<Mesh::Face_index, int> labels;
+  std::map<Mesh::Edge_index, int> G;
+  template <class Chain, class NP = decltype(CGAL::parameters::default_values())>
+  bool solve(Solver& solver, const Chain& chain, const NP& np = CGAL::parameters::default_values())
+  {
+    return solver.solve(chain, boost::make_assoc_property_map(labels),
+                        SWN::parameters::nonbounding_chain_map(boost::make_assoc_property_map(G), np));
+  }
+  template <class Chain>
+  bool solve(const Mesh& m, const Chain& chain)
+  {
+    return CGAL::surface_winding_numbers(m, chain, boost::make_assoc_property_map(labels),
+                                         SWN::parameters::nonbounding_chain_map(boost::make_assoc_property_map(G)));
+  }
+  void expect_equal(const Labels_and_G& other) const
+  {
+    EXPECT_EQ(labels, other.labels);
+    EXPECT_EQ(G, other.G);
+  }
+};
+
+// a torus_mesh(nu, nv) with its factorized 0-form Laplacian (the jump Laplacian with nothing excluded)
+struct Torus_with_0form_laplacian : Torus_tables
+{
+  SI::Jump_laplace_system<LA> L0;
+  Torus_with_0form_laplacian(int nu, int nv) : Torus_tables(nu, nv)
+  {
+    L0.jump_laplacian(tables(), w, std::vector<char>(tables().nv, 0));
+  }
+};
+
 // ASSERTs that order is a permutation of 0 .. n-1
 void expect_permutation(std::vector<std::size_t> order, std::size_t n)
 {

@@ -22,11 +22,10 @@ double max_difference_up_to_a_constant(const SI::Mesh_tables& t, const std::vect
 
 TEST(JumpLaplace, EndpointUpdateAgreesWithAFreshFactorization)
 {
-  const int nu = 16, nv = 9;
-  const Torus_tables torus(nu, nv);
+  const int nv = 9;
+  const Torus_with_0form_laplacian torus(16, nv);
   const SI::Mesh_tables& t = torus.tables();
-  SI::Jump_laplace_system<LA> L0;
-  L0.jump_laplacian(t, torus.w, std::vector<char>(t.nv, 0));
+  const SI::Jump_laplace_system<LA>& L0 = torus.L0;
   const std::vector<double> c = random_values(3 * t.nf, 3);
   const auto compare = [&](const std::vector<char>& excluded, const std::string& what) {
     SI::Jump_laplace_system<LA> fresh, updated(L0);
@@ -65,11 +64,10 @@ TEST(JumpLaplace, EndpointUpdateAgreesWithAFreshFactorization)
 
 TEST(JumpLaplace, EndpointUpdateRefusesSplitComponentsAndLargeRanks)
 {
-  const int nu = 16, nv = 9;
-  const Torus_tables torus(nu, nv);
+  const int nv = 9;
+  const Torus_with_0form_laplacian torus(16, nv);
   const SI::Mesh_tables& t = torus.tables();
-  SI::Jump_laplace_system<LA> L0;
-  L0.jump_laplacian(t, torus.w, std::vector<char>(t.nv, 0));
+  const SI::Jump_laplace_system<LA>& L0 = torus.L0;
   // two meridian rings out: the torus falls apart into two cylinders, each needs its pinned vertex
   std::vector<char> rings(t.nv, 0);
   const auto V = torus_vertex(torus.vs, nv);
@@ -113,18 +111,14 @@ TEST(Solver, BrokenStrokesUseTheKeptFactorizationWithAnUpdate)
       auto chain = get(CGAL::dynamic_edge_property_t<int>(), m);
       for(auto e : edges(m)) put(chain, e, 0);
       for(const auto& p : strokes[k]) ASSERT_TRUE(SWN::add_vertex_polyline_to_chain(m, p, chain));
-      std::map<Mesh::Face_index, int> by_solver, by_function;
-      std::map<Mesh::Edge_index, int> G_solver, G_function;
-      ASSERT_TRUE(solver.solve(chain, boost::make_assoc_property_map(by_solver),
-                               SWN::parameters::nonbounding_chain_map(boost::make_assoc_property_map(G_solver),
-                                                                      SWN::parameters::keep_hodge_factorization(keep == 1))));
+      Labels_and_G by_solver, by_function;
+      ASSERT_TRUE(by_solver.solve(solver, chain, SWN::parameters::keep_hodge_factorization(keep == 1)));
       const SWN::Solve_report rep = solver.report();
-      ASSERT_TRUE(CGAL::surface_winding_numbers(m, chain, boost::make_assoc_property_map(by_function),
-                                                SWN::parameters::nonbounding_chain_map(boost::make_assoc_property_map(G_function))));
-      EXPECT_EQ(by_solver, by_function) << "stroke " << k;
-      EXPECT_EQ(G_solver, G_function) << "stroke " << k;
+      ASSERT_TRUE(by_function.solve(m, chain));
+      SCOPED_TRACE("stroke " + std::to_string(k));
+      by_solver.expect_equal(by_function);
       int nG = 0;
-      for(const auto& g : G_solver) nG += g.second != 0;
+      for(const auto& g : by_solver.G) nG += g.second != 0;
       EXPECT_GE(nG, nv) << "stroke " << k;   // at least the completed meridian
       EXPECT_EQ(rep.interior_endpoints, 4u);
       const bool expect_update = keep == 1 && k > 0;

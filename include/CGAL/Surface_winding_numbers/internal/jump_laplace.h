@@ -456,25 +456,22 @@ public:
       if(local[d] == npos) { local[d] = T.size(); T.push_back(d); }
       return local[d];
     };
-    std::vector<std::pair<std::size_t, std::size_t>> removed;   // local indices of the removed edges' ends
+    struct Removed { std::size_t i, j; double w; };   // local indices of a removed edge's ends, its weight
+    std::vector<Removed> removed;
     for(std::size_t e = 0; e < m.ne; ++e)
-      if(edge_weight[e] != 0) removed.emplace_back(index(m.ev[2 * e]), index(m.ev[2 * e + 1]));
+      if(edge_weight[e] != 0) removed.push_back({index(m.ev[2 * e]), index(m.ev[2 * e + 1]), edge_weight[e]});
     for(std::size_t v = 0; v < m.nv; ++v)
       if(excluded[v]) index(v);
     if(T.size() > max_rank) return false;
     const Eigen::Index t = Eigen::Index(T.size());
     std::shared_ptr<Update> update = std::make_shared<Update>();
     update->M.setZero(t, t);
-    std::size_t k = 0;
-    for(std::size_t e = 0; e < m.ne; ++e)
+    for(const Removed& r : removed)
     {
-      if(edge_weight[e] == 0) continue;
-      const double w = edge_weight[e];
-      const Eigen::Index i = Eigen::Index(removed[k].first), j = Eigen::Index(removed[k].second);
-      ++k;
-      if(i != Eigen::Index(npos)) update->M(i, i) -= w;
-      if(j != Eigen::Index(npos)) update->M(j, j) -= w;
-      if(i != Eigen::Index(npos) && j != Eigen::Index(npos)) { update->M(i, j) += w; update->M(j, i) += w; }
+      const Eigen::Index i = Eigen::Index(r.i), j = Eigen::Index(r.j);
+      if(r.i != npos) update->M(i, i) -= r.w;
+      if(r.j != npos) update->M(j, j) -= r.w;
+      if(r.i != npos && r.j != npos) { update->M(i, j) += r.w; update->M(j, i) += r.w; }
     }
     for(std::size_t v = 0; v < m.nv; ++v)
       if(excluded[v]) update->M(Eigen::Index(local[dof_[v]]), Eigen::Index(local[dof_[v]])) += 1;

@@ -162,7 +162,7 @@ public:
     // after that factorization (the second thread's work is the longer one); they count in the Hodge step.
     // Once this thread has solved for u, it takes its share of the basis's many-column solve.
     compute_vertex_order();   // read by both threads
-    keep_0form_laplacian_ = options.keep_hodge_factorization;
+    const bool keep = options.keep_hodge_factorization;
     Shared_work basis_solves;   // outlives the second thread (the future below joins it first)
     std::future<void> hodge_factorization;
     double time_order = 0, time_generators = 0;   // counted in the jump Laplace step and the Hodge step
@@ -175,13 +175,13 @@ public:
       std::shared_future<Cohomology_generators> pending = generators.get_future().share();
       try
       {
-        hodge_factorization = std::async(std::launch::async, [this, max_classes, pending, &basis_solves] {
+        hodge_factorization = std::async(std::launch::async, [this, max_classes, keep, pending, &basis_solves] {
           struct Finish   // whatever happens, this thread stops waiting for shared work
           {
             Shared_work& work;
             ~Finish() { work.finish(); }
           } finish{basis_solves};
-          prepare_hodge_projection(max_classes, pending, &basis_solves);
+          prepare_hodge_projection(max_classes, pending, keep, &basis_solves);
         });
       }
       catch(const std::system_error&) {}   // no thread available: computed when needed
@@ -237,7 +237,7 @@ public:
         basis_solves.help();
         hodge_factorization.get();   // rethrows a failed factorization
       }
-      const std::vector<double> gamma = harmonic_part_of(r.u, endpoint, open_curve, options.harmonic_basis_max_classes);
+      const std::vector<double> gamma = harmonic_part_of(r.u, endpoint, open_curve, options.harmonic_basis_max_classes, keep);
       if(verbose && open_curve)
         std::cerr << "[swn] harmonic part: " << (basis_.assembled() ? "projection on " + std::to_string(basis_.size()) +
                                                  " harmonic 1-forms" : std::string("2-form Laplace solve")) << "\n";
@@ -344,14 +344,14 @@ public:
   }
 
   // gamma: the Darboux derivative of u (Eq. 5), projected to its harmonic part (Eq. 9) when the curve
-  // has interior endpoints
+  // has interior endpoints; `keep` as for prepare_hodge_projection()
   std::vector<double> harmonic_part_of(const std::vector<double>& u, const std::vector<char>& endpoint, bool open_curve,
-                                       std::size_t max_classes = harmonic_basis_max_classes)
+                                       std::size_t max_classes = harmonic_basis_max_classes, bool keep = false)
   {
     std::vector<double> gamma = darboux_derivative(m_, u, endpoint);
     if(!open_curve) return gamma;
     prepare_hodge_projection(max_classes,
-                             std::async(std::launch::deferred, [this] { return cohomology_generators(m_); }).share());
+                             std::async(std::launch::deferred, [this] { return cohomology_generators(m_); }).share(), keep);
     return basis_.assembled() ? basis_.harmonic_part(gamma) : hodge_.harmonic_part(gamma);
   }
 
@@ -359,10 +359,10 @@ public:
   // `max_classes` cohomology classes, else the factorized 2-form Laplacian. Nothing if either is there.
   // The basis is built with the 0-form Laplacian, the one kept from a curve without interior endpoints
   // if there is one, and the cohomology `generators` (read once the 0-form Laplacian is factorized:
-  // they may still be computed by the other thread). A new 0-form Laplacian is kept only when the
-  // solve keeps its factorizations (keep_0form_laplacian_): held through the residual step, its memory
-  // slowed that step down (the 380-case benchmark: residual +15 %, peak +15 %, 2026-12-03).
-  void prepare_hodge_projection(std::size_t max_classes, std::shared_future<Cohomology_generators> generators,
+  // they may still be computed by the other thread). A new 0-form Laplacian is kept only with `keep`
+  // (the solve keeps its factorizations): held through the residual step, its memory slowed that step
+  // down (the 380-case benchmark: residual +15 %, peak +15 %, 2026-12-03).
+  void prepare_hodge_projection(std::size_t max_classes, std::shared_future<Cohomology_generators> generators, bool keep,
                                 Shared_work* share = nullptr)
   {
     if(hodge_ready()) return;
@@ -374,7 +374,7 @@ public:
         compute_vertex_order();
         L0 = std::make_shared<Jump_laplace_system<LA>>();
         L0->jump_laplacian(m_, weight_, std::vector<char>(m_.nv, 0), &vertex_order_);
-        if(keep_0form_laplacian_) laplacian_ = L0;   // the solving thread does not read it meanwhile
+        if(keep) laplacian_ = L0;   // the solving thread does not read it meanwhile
       }
       const Cohomology_generators& gen = generators.get();
       if(gen.complete && gen.size() <= max_classes)
@@ -475,7 +475,6 @@ private:
   // (and then the one the harmonic basis is built with); kept between solves unless
   // keep_hodge_factorization is false
   std::shared_ptr<Jump_laplace_system<LA>> laplacian_;
-  bool keep_0form_laplacian_ = false;   // keep_hodge_factorization of the current solve
   mutable std::vector<std::size_t> border_loops_;
   mutable std::vector<std::size_t> vertex_order_;   // elimination order of the jump Laplacian (empty: by vertex)
   mutable bool vertex_order_computed_ = false;
