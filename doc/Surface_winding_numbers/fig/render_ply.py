@@ -36,40 +36,35 @@ def read_ply(path):
         elif w[0] == "property":
             elements[-1][2].append((w[-1], w[1:-1]))
     body = data[end:]
-    values = {}
+    pos = 0
     if fmt == "ascii":
         tokens = body.split()
-        pos = 0
-        for name, count, props in elements:
-            rows = []
-            for _ in range(count):
-                row = {}
-                for pname, ptype in props:
-                    if ptype[0] == "list":
-                        n = int(tokens[pos]); pos += 1
-                        row[pname] = [float(t) for t in tokens[pos:pos + n]]; pos += n
-                    else:
-                        row[pname] = float(tokens[pos]); pos += 1
-                rows.append(row)
-            values[name] = rows
+
+        def scalar(_type):
+            nonlocal pos
+            pos += 1
+            return float(tokens[pos - 1])
     else:
         order = "<" if fmt == "binary_little_endian" else ">"
-        pos = 0
-        for name, count, props in elements:
-            rows = []
-            for _ in range(count):
-                row = {}
-                for pname, ptype in props:
-                    if ptype[0] == "list":
-                        c = struct.calcsize(order + PLY_TYPES[ptype[1]])
-                        n = struct.unpack_from(order + PLY_TYPES[ptype[1]], body, pos)[0]; pos += c
-                        t = order + PLY_TYPES[ptype[2]] * n
-                        row[pname] = list(struct.unpack_from(t, body, pos)); pos += struct.calcsize(t)
-                    else:
-                        t = order + PLY_TYPES[ptype[0]]
-                        row[pname] = struct.unpack_from(t, body, pos)[0]; pos += struct.calcsize(t)
-                rows.append(row)
-            values[name] = rows
+
+        def scalar(type_name):
+            nonlocal pos
+            t = order + PLY_TYPES[type_name]
+            pos += struct.calcsize(t)
+            return struct.unpack_from(t, body, pos - struct.calcsize(t))[0]
+    values = {}
+    for name, count, props in elements:
+        rows = []
+        for _ in range(count):
+            row = {}
+            for pname, ptype in props:
+                if ptype[0] == "list":
+                    n = int(scalar(ptype[1]))
+                    row[pname] = [scalar(ptype[2]) for _ in range(n)]
+                else:
+                    row[pname] = scalar(ptype[0])
+            rows.append(row)
+        values[name] = rows
     verts = [(r["x"], r["y"], r["z"]) for r in values["vertex"]]
     faces, colours = [], []
     for r in values["face"]:
