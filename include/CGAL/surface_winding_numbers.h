@@ -19,7 +19,7 @@ namespace CGAL {
 /*!
 \ingroup PkgSurfaceWindingNumbersRef
 
-\brief computes the surface winding numbers of a curve on a triangle mesh (Feng, Gillespie and
+\brief computes the surface winding numbers of a curve on a surface mesh (Feng, Gillespie and
 Crane, "Winding Numbers on Discrete Surfaces", SIGGRAPH 2023).
 
 The curve is an integer 1-chain on the edges of `tm`: it may be broken (gaps), self-intersecting,
@@ -32,7 +32,8 @@ nonbounding loops (around handles, or between border components) are filtered ou
 W is defined up to one integer per connected component; the normalization used is: in every
 connected component, the label covering the largest area is 0.
 
-\tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+\tparam TriangleMesh a model of `FaceListGraph`; faces of more than three sides are triangulated
+        internally and every output stays on the mesh's own faces and edges (\ref SWNAPISoup)
 \tparam ChainMap a model of `ReadablePropertyMap` with key `boost::graph_traits<TriangleMesh>::%edge_descriptor`
         and an integer value type: the signed number of times the curves traverse the edge,
         positive along `halfedge(e, tm)` (from its source to its target) for the descriptor `e` met while
@@ -44,7 +45,7 @@ connected component, the label covering the largest area is 0.
         `boost::graph_traits<TriangleMesh>::%face_descriptor` and an integer value type
 \tparam NamedParameters a sequence of named parameters
 
-\param tm the triangle mesh
+\param tm the mesh
 \param chain the input curves
 \param labels receives W for every face
 \param np an optional sequence of named parameters among the ones listed below
@@ -128,7 +129,7 @@ connected component, the label covering the largest area is 0.
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
-\returns `true` on success. On failure (non-triangle face, empty mesh, non-finite coordinates,
+\returns `true` on success. On failure (a face with fewer than three vertices or a repeated one, empty mesh, non-finite coordinates,
 zero-area face, nonzero chain value on a border edge, failed factorization or linear program),
 no output map is written, and the named parameter `report` tells why.
 

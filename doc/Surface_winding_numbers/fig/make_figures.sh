@@ -1,5 +1,5 @@
 #!/bin/sh
-# Makes the pictures of the manual's sections on curves off the mesh (Surface_winding_numbers.txt):
+# Makes the pictures of the manual's examples of curves off the mesh (Surface_winding_numbers.txt):
 # runs the examples curves_off_the_mesh and selection_and_segmentation and the swn tool on the bunny with
 # star.svg, and renders their PLY outputs with render_ply.py (plain Python, no dependency).
 #

@@ -12,7 +12,7 @@ namespace CGAL {
 namespace Surface_winding_numbers {
 
 /// \ingroup PkgSurfaceWindingNumbersRef
-/// Exception thrown inside the package when the input cannot be processed (non-triangle face,
+/// Exception thrown inside the package when the input cannot be processed (face with a repeated vertex,
 /// chain on a border edge, non-finite coordinates, degenerate face, ...). The functions returning
 /// `bool` catch it and copy its message to `Solve_report::error`.
 struct Invalid_input : std::runtime_error

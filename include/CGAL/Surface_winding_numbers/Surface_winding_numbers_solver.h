@@ -238,11 +238,11 @@ void write_report(const NamedParameters& np, const Solve_report& rep)
 /*!
 \ingroup PkgSurfaceWindingNumbersRef
 
-\brief computes surface winding numbers for many curves on one triangle mesh.
+\brief computes surface winding numbers for many curves on one surface mesh.
 
 The constructor extracts the mesh into flat index tables (renumbered for memory locality when the
-mesh's own numbering is scattered; results and error messages use the mesh's own order), checks it (triangles only, finite
-coordinates, no zero-area face) and computes the cotan weights. The Hodge projection's per-mesh part
+mesh's own numbering is scattered; results and error messages use the mesh's own order), checks it (faces of at least three distinct
+vertices, triangulated internally if they have more, finite coordinates, no zero-area face) and computes the cotan weights. The Hodge projection's per-mesh part
 (a basis of the harmonic 1-forms; the factorized 2-form Laplacian on meshes with more than 24
 homology classes) is computed the first time a curve with interior endpoints needs it and then
 kept (unless `solve()` gets `keep_hodge_factorization(false)`). The jump Laplacian depends on the curve's
@@ -255,7 +255,8 @@ splits a component, the jump Laplacian is factorized for that curve).
 
 The mesh must not be modified while the solver is in use.
 
-\tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+\tparam TriangleMesh a model of `FaceListGraph`; faces of more than three sides are triangulated
+        internally (\ref SWNAPISoup)
 \tparam SparseLinearSolver a model of `SparseLinearAlgebraWithFactorTraits_d` for symmetric positive
         definite systems; its instances are default-constructed (one per factorization).
         Default: `CGAL::Eigen_solver_traits` over CHOLMOD's supernodal Cholesky factorization (nested-dissection numbering above 150k unknowns, AMD below)
@@ -279,7 +280,7 @@ public:
   /*!
   builds the solver for `tm`.
   \tparam NamedParameters a sequence of named parameters
-  \param tm the triangle mesh; it must outlive the solver and must not be modified while the solver is in use
+  \param tm the mesh; it must outlive the solver and must not be modified while the solver is in use
   \param np optional: `vertex_point_map` (default: the internal point map of `tm`) and `geom_traits`
          (default: the kernel of the point type), as everywhere in CGAL.
 
