@@ -22,66 +22,12 @@
 
 #include <algorithm>
 #include <cstddef>
-#include <cstdint>
 #include <limits>
-#include <new>
 #include <vector>
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
 
 namespace CGAL {
 namespace Surface_winding_numbers {
 namespace internal {
-
-// Arrays of 2 MiB and more in memory of their own, which the kernel is asked to back with transparent
-// huge pages (a request for these pages only, ignored where the kernel's setting is "never"): the
-// factors are the package's largest arrays, and on the benchmark's virtual machine the first touch
-// of a 4 KiB page costs about 8 us, twice the time per byte of a 2 MiB one.
-template <class T>
-struct Huge_page_allocator
-{
-  typedef T value_type;
-  static constexpr std::size_t huge = std::size_t(1) << 21;
-  Huge_page_allocator() = default;
-  template <class U>
-  Huge_page_allocator(const Huge_page_allocator<U>&) {}
-  static std::size_t mapped_size(std::size_t n) { return (n * sizeof(T) + huge - 1) / huge * huge; }
-
-  T* allocate(std::size_t n)
-  {
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-    if(n * sizeof(T) >= huge)
-    {
-      const std::size_t size = mapped_size(n);
-      void* raw = mmap(nullptr, size + huge, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-      if(raw == MAP_FAILED) throw std::bad_alloc();
-      char* begin = static_cast<char*>(raw);
-      char* aligned = reinterpret_cast<char*>((reinterpret_cast<std::uintptr_t>(begin) + huge - 1) & ~std::uintptr_t(huge - 1));
-      if(aligned > begin) munmap(begin, std::size_t(aligned - begin));
-      if(begin + size + huge > aligned + size) munmap(aligned + size, std::size_t(begin + huge - aligned));
-      madvise(aligned, size, MADV_HUGEPAGE);
-      return reinterpret_cast<T*>(aligned);
-    }
-#endif
-    return std::allocator<T>().allocate(n);
-  }
-  void deallocate(T* p, std::size_t n)
-  {
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-    if(n * sizeof(T) >= huge)
-    {
-      munmap(p, mapped_size(n));
-      return;
-    }
-#endif
-    std::allocator<T>().deallocate(p, n);
-  }
-  template <class U>
-  bool operator==(const Huge_page_allocator<U>&) const { return true; }
-  template <class U>
-  bool operator!=(const Huge_page_allocator<U>&) const { return false; }
-};
 
 // A = L L^T of a sparse symmetric positive definite matrix (both triangles stored), as an Eigen
 // sparse solver (compute(), info(), solve()) for CGAL::Eigen_solver_traits. The unknowns are
@@ -315,7 +261,7 @@ private:
   bool ok_ = false;
   std::size_t n_ = 0;
   std::vector<std::size_t> perm_, super_, row_begin_, block_begin_, rows_;
-  std::vector<double, Huge_page_allocator<double>> Lx_;
+  std::vector<double> Lx_;
 };
 
 } // namespace internal
