@@ -47,21 +47,6 @@ def run(cmd, **kw):
     return subprocess.run(cmd, check=True, **kw)
 
 
-def solver_environment():
-    """The environment of the solver processes: like the swn tool, one OpenMP thread (CHOLMOD's fixed
-    four-thread regions) and one OpenBLAS thread unless the caller set them; the libraries read both
-    when they load. Under the two concurrent factorizations they otherwise oversubscribe small
-    machines (RESULTS.md, Speed). Also like the tool, glibc's malloc asks for transparent huge pages
-    (glibc.malloc.hugetlb=1 added to GLIBC_TUNABLES unless the caller set it; RESULTS.md, Speed)."""
-    env = dict(os.environ)
-    env.setdefault("OMP_THREAD_LIMIT", "1")
-    env.setdefault("OPENBLAS_NUM_THREADS", "1")
-    tunables = env.get("GLIBC_TUNABLES", "")
-    if "glibc.malloc.hugetlb" not in tunables:
-        env["GLIBC_TUNABLES"] = (tunables + ":" if tunables else "") + "glibc.malloc.hugetlb=1"
-    return env
-
-
 def solve_case(args, case_id, case_dir, check_api):
     meta = json.load(open(os.path.join(case_dir, "meta.json")))
     cmd = [os.path.join(args.build, "swn_bench_solve"), case_dir, meta["mesh_file"], "--lp", args.lp, "--epsilon", str(args.epsilon)]
@@ -70,7 +55,7 @@ def solve_case(args, case_id, case_dir, check_api):
     row = dict(meta)
     t0 = time.time()
     try:
-        p = subprocess.run(cmd, capture_output=True, text=True, timeout=args.timeout, env=solver_environment())
+        p = subprocess.run(cmd, capture_output=True, text=True, timeout=args.timeout)
         line = p.stdout.strip().splitlines()[-1] if p.stdout.strip() else "{}"
         res = json.loads(line)
         if not res:
@@ -173,10 +158,8 @@ def machine():
         thp = open("/sys/kernel/mm/transparent_hugepage/enabled").read().strip()
     except OSError:
         pass
-    env = solver_environment()
     return {"cpu": cpu, "cores": os.cpu_count(), "memory_gb": mem, "system": platform.platform(),
-            "solver_thread_limits": {k: env[k] for k in ("OMP_THREAD_LIMIT", "OPENBLAS_NUM_THREADS")},
-            "solver_glibc_tunables": env["GLIBC_TUNABLES"], "transparent_hugepages": thp}
+            "transparent_hugepages": thp}
 
 
 def git_commit(root):

@@ -1,6 +1,7 @@
 // Many closed curves on one mesh with the solver class: what the kept factorization saves.
 //
 //   solver_reuse MESH N [broken]
+//   solver_reuse sketch NU NV N
 //
 // Solves N small closed loops (the links of N vertices spread over the mesh; with `broken`, each with one
 // edge left out, so that it has two interior endpoints) one after the other with
@@ -11,8 +12,6 @@
 //   g++ -std=gnu++17 -O2 -DNDEBUG -frounding-math -DCGAL_EIGEN3_ENABLED -DCGAL_SWN_USE_CHOLMOD \
 //     -DCGAL_SWN_USE_LEMON -Iinclude -isystem /usr/include/eigen3 -isystem /usr/include/suitesparse \
 //     benchmark/solver_reuse.cpp -o solver_reuse -lgmp -lmpfr -llemon -lcholmod -pthread
-// and run with OPENBLAS_NUM_THREADS=1 OMP_THREAD_LIMIT=1 GLIBC_TUNABLES=glibc.malloc.hugetlb=1, as the swn
-// tool runs itself.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -20,6 +19,7 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <iostream>
 #include <iterator>
@@ -30,8 +30,69 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 namespace SWN = CGAL::Surface_winding_numbers;
 
+// The paper's sketching use (Sec. 5.3) on a torus of nu x nv quads (2 nu nv faces): a meridian with a
+// gap, kept, and a square stroke with a gap, moved by one step along the torus before each solve. Prints
+// each solve and checks its labels and G against a fresh solver's.
+int sketch(int nu, int nv, int n)
+{
+  Mesh m;
+  std::vector<Mesh::Vertex_index> v(std::size_t(nu) * std::size_t(nv));
+  const double R = 3, r = 1, pi = 3.14159265358979323846;
+  for(int i = 0; i < nu; ++i)
+    for(int j = 0; j < nv; ++j)
+    {
+      const double a = 2 * pi * i / nu, b = 2 * pi * j / nv;
+      v[std::size_t(i * nv + j)] = m.add_vertex(K::Point_3((R + r * std::cos(b)) * std::cos(a), (R + r * std::cos(b)) * std::sin(a), r * std::sin(b)));
+    }
+  const auto at = [&](int i, int j) { return v[std::size_t(((i % nu + nu) % nu) * nv + (j % nv + nv) % nv)]; };
+  for(int i = 0; i < nu; ++i)
+    for(int j = 0; j < nv; ++j)
+    {
+      m.add_face(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+      m.add_face(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+    }
+  SWN::Surface_winding_numbers_solver<Mesh> solver(m);
+  auto labels = get(CGAL::dynamic_face_property_t<int>(), m);
+  auto G = get(CGAL::dynamic_edge_property_t<int>(), m);
+  const int side = nv / 4;
+  for(int k = 0; k < n; ++k)
+  {
+    auto chain = get(CGAL::dynamic_edge_property_t<int>(), m);
+    for(auto e : edges(m)) put(chain, e, 0);
+    std::vector<Mesh::Vertex_index> meridian, stroke;
+    for(int j = 1; j <= nv - 2; ++j) meridian.push_back(at(nu / 8, j));   // a gap of 3 edges
+    const int i0 = nu / 2 + k, j0 = nv / 4;
+    for(int t = 0; t < side; ++t) stroke.push_back(at(i0 + t, j0));
+    for(int t = 0; t < side; ++t) stroke.push_back(at(i0 + side, j0 + t));
+    for(int t = 0; t < side; ++t) stroke.push_back(at(i0 + side - t, j0 + side));
+    for(int t = 0; t < side - 1; ++t) stroke.push_back(at(i0, j0 + side - t));   // a gap of 1 edge
+    SWN::add_vertex_polyline_to_chain(m, meridian, chain);
+    SWN::add_vertex_polyline_to_chain(m, stroke, chain);
+    const auto t0 = std::chrono::steady_clock::now();
+    const bool ok = solver.solve(chain, labels, SWN::parameters::nonbounding_chain_map(G));
+    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const SWN::Solve_report& r = solver.report();
+    // a fresh solve of the same curves
+    auto fresh_labels = get(CGAL::dynamic_face_property_t<int>(), m);
+    auto fresh_G = get(CGAL::dynamic_edge_property_t<int>(), m);
+    const auto t1 = std::chrono::steady_clock::now();
+    const bool fresh_ok = CGAL::surface_winding_numbers(m, chain, fresh_labels, SWN::parameters::nonbounding_chain_map(fresh_G));
+    const double t_fresh = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+    bool same = ok && fresh_ok;
+    for(auto f : faces(m)) same = same && get(labels, f) == get(fresh_labels, f);
+    for(auto e : edges(m)) same = same && get(G, e) == get(fresh_G, e);
+    std::cout << "stroke " << k << (ok ? " ok" : " failed") << ": jump Laplace " << r.time_jump_laplace << " s (update rank "
+              << r.jump_laplacian_update_rank << "), Hodge " << r.time_hodge << " s, residual " << r.time_residual
+              << " s, second solve " << r.time_second_solve << " s, labels " << r.time_labels << " s, whole " << t
+              << " s; fresh solve " << t_fresh << " s, " << (same ? "same" : "DIFFERENT") << " labels and G\n";
+    if(!same) return 1;
+  }
+  return 0;
+}
+
 int main(int argc, char** argv)
 {
+  if(argc == 5 && std::string(argv[1]) == "sketch") return sketch(std::atoi(argv[2]), std::atoi(argv[3]), std::atoi(argv[4]));
   Mesh m;
   if(argc < 3 || !CGAL::IO::read_polygon_mesh(argv[1], m) || is_empty(m))
   {

@@ -355,3 +355,60 @@ TEST(Solver, ConcurrentFactorizationsGiveTheSameAnswerAsSequential)
   ASSERT_TRUE(solver.solve(c.chain, l3)) << solver.report().error;
   expect_labels_of_the_first_solve();
 }
+
+#ifdef CGAL_SWN_USE_CHOLMOD
+// The package's supernodal factorization (the default sparse solver) on a matrix that is not a mesh
+// Laplacian: a 2D grid with a dense block coupled to it (supernodes of one column to dozens), against
+// Eigen's LLT, one and many columns, from two threads at once; a matrix that is not positive definite
+// is reported, never solved.
+TEST(SupernodalCholesky, AgreesWithEigenAndReportsIndefiniteMatrices)
+{
+  typedef Eigen::SparseMatrix<double> SM;
+  const int g = 30, dense = 40, n = g * g + dense;
+  std::vector<Eigen::Triplet<double>> t;
+  for(int i = 0; i < g; ++i)
+    for(int j = 0; j < g; ++j)
+    {
+      const int v = i * g + j;
+      t.emplace_back(v, v, 4.5 + 0.01 * (v % 5));
+      if(i + 1 < g) { t.emplace_back(v, v + g, -1); t.emplace_back(v + g, v, -1); }
+      if(j + 1 < g) { t.emplace_back(v, v + 1, -1); t.emplace_back(v + 1, v, -1); }
+    }
+  for(int a = 0; a < dense; ++a)
+  {
+    t.emplace_back(g * g + a, g * g + a, 2.0 * dense);
+    for(int b = 0; b < a; ++b) { t.emplace_back(g * g + a, g * g + b, 0.5); t.emplace_back(g * g + b, g * g + a, 0.5); }
+    t.emplace_back(g * g + a, 17 * a, -1);
+    t.emplace_back(17 * a, g * g + a, -1);
+  }
+  SM A(n, n);
+  A.setFromTriplets(t.begin(), t.end());
+  SI::Supernodal_cholesky<SM> S;
+  ASSERT_EQ(S.compute(A).info(), Eigen::Success);
+  EXPECT_GT(S.factor_entries(), std::size_t(A.nonZeros() / 2));
+  Eigen::SimplicialLLT<SM> reference(A);
+  ASSERT_EQ(reference.info(), Eigen::Success);
+  const Eigen::MatrixXd B = Eigen::MatrixXd::Random(n, 11);
+  const Eigen::MatrixXd X = reference.solve(B);
+  EXPECT_LT((S.solve(B) - X).norm(), 1e-12 * X.norm());
+  EXPECT_LT((S.solve(B.col(3)) - X.col(3)).norm(), 1e-12 * X.norm());
+  double difference[2] = {1, 1};
+  std::thread other([&] {
+    SI::Supernodal_cholesky<SM>::Solve_workspace ws;
+    const Eigen::Map<const Eigen::MatrixXd> x(S.solve_with_workspace(B.data(), std::size_t(n), 11, ws), n, 11);
+    difference[1] = (x - X).norm();
+  });
+  SI::Supernodal_cholesky<SM>::Solve_workspace ws;
+  const Eigen::Map<const Eigen::MatrixXd> x(S.solve_with_workspace(B.data(), std::size_t(n), 11, ws), n, 11);
+  difference[0] = (x - X).norm();
+  other.join();
+  EXPECT_LT(difference[0], 1e-12 * X.norm());
+  EXPECT_LT(difference[1], 1e-12 * X.norm());
+  SM indefinite = A;
+  indefinite.coeffRef(g * g + 3, g * g + 3) = -1;
+  SI::Supernodal_cholesky<SM> F;
+  EXPECT_NE(F.compute(indefinite).info(), Eigen::Success);
+  EXPECT_EQ(F.solve_with_workspace(B.data(), std::size_t(n), 1, ws), nullptr);
+  EXPECT_FALSE(std::isfinite(F.solve(B.col(0))(0)));
+}
+#endif

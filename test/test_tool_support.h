@@ -19,7 +19,6 @@ namespace fs = std::filesystem;
 namespace tool_test {
 
 const std::string tool = SWN_TOOL_PATH;
-const std::string tuned = SWN_TUNED_PATH;
 const std::string demo = std::string(SWN_REPO_DATA_DIR) + "/swn-demo/";
 const std::string corpus = std::string(SWN_TEST_DATA_DIR) + "/malformed/";
 

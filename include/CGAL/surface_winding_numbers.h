@@ -64,7 +64,7 @@ connected component, the label covering the largest area is 0.
   \cgalParamNBegin{sparse_linear_solver}
     \cgalParamDescription{the solver type used for the symmetric positive definite systems (its instances are default-constructed)}
     \cgalParamType{a model of `SparseLinearAlgebraWithFactorTraits_d`}
-    \cgalParamDefault{`CGAL::Eigen_solver_traits` over CHOLMOD's supernodal Cholesky factorization (in the package's nested-dissection numbering of the unknowns above 150k of them, AMD ordering below) when the package is built with CHOLMOD (`CGAL_SWN_USE_CHOLMOD`), `CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<CGAL::Eigen_sparse_matrix<double>::%EigenType> >` otherwise}
+    \cgalParamDefault{`CGAL::Eigen_solver_traits` over the package's supernodal Cholesky factorization on CHOLMOD's symbolic analysis (in the package's nested-dissection numbering of the unknowns above 150k of them, AMD ordering below; the dense blocks with Eigen's kernels on the calling thread, whatever the thread settings of the process's BLAS) when the package is built with CHOLMOD (`CGAL_SWN_USE_CHOLMOD`), `CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<CGAL::Eigen_sparse_matrix<double>::%EigenType> >` otherwise}
   \cgalParamNEnd
   \cgalParamNBegin{verbose}
     \cgalParamDescription{prints the steps and their timings to `std::cerr`}

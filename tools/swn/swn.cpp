@@ -94,10 +94,8 @@ static const char* usage =
   "  swn data/swn-demo/DoubleTorusWithLoops.obj --output-dir out/dt --verbose\n"
   "  swn data/swn-demo/bunny.obj --curve data/swn-demo/bunny-brokenheart.txt --output-dir out/bunny\n"
   "\n"
-  "environment: the tool sets no process-wide setting. swn-tuned, next to swn, runs it with one thread per\n"
-  "call in CHOLMOD and OpenBLAS (OMP_THREAD_LIMIT=1, OPENBLAS_NUM_THREADS=1) and malloc's huge pages and\n"
-  "freed-memory reuse (GLIBC_TUNABLES), keeping what is already set: DoubleTorusWithLoops 0.30 s instead\n"
-  "of 0.53 s on 2 shared cores (medians of 15 alternating runs; 40-49 % less time in three such series)\n\n"
+  "environment: none is read, and the tool sets no process-wide setting (the factorizations run on the\n"
+  "tool's own threads, whatever the thread settings of the process's BLAS or OpenMP)\n\n"
   "limits: only regular files are read; a curve has at most 10^6 + 2 x (mesh edges) segments counted with\n"
   "multiplicity (multiplicity of an `h` line in [1, 1000]), which bounds the work and the outputs\n\n"
   "exit status: 0 success, 1 solver or output failure, 2 bad input (the message names file and line).\n"
@@ -301,8 +299,6 @@ int main(int argc, char** argv)
   if(opt.help) { std::cout << usage; return 0; }
   if(!opt.output_dir.empty()) SIO::Atomic_output_dir::remove_temporaries_on_signals();   // both routes: nothing left on SIGINT, SIGTERM, SIGHUP
   auto log = [&](const std::string& s) { if(opt.verbose) std::cerr << "[swn] " << s << "\n"; };
-  for(const char* var : {"OMP_THREAD_LIMIT", "OPENBLAS_NUM_THREADS", "GLIBC_TUNABLES"})
-    if(const char* value = std::getenv(var)) log(std::string(var) + "=" + value);
 
   const auto t_start = std::chrono::steady_clock::now();
   Mesh input;

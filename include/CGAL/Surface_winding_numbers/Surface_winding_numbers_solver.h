@@ -11,6 +11,9 @@
 #include <CGAL/Surface_winding_numbers/internal/pipeline.h>
 #include <CGAL/Surface_winding_numbers/internal/polygon_tables.h>
 #include <CGAL/Surface_winding_numbers/internal/unit_scale.h>
+#ifdef CGAL_SWN_USE_CHOLMOD
+#include <CGAL/Surface_winding_numbers/internal/supernodal_cholesky.h>
+#endif
 #ifdef CGAL_USE_GLPK
 #include <CGAL/Surface_winding_numbers/GLPK_linear_program_traits.h>
 #endif
@@ -22,9 +25,6 @@
 #include <CGAL/tags.h>
 #include <CGAL/Dynamic_property_map.h>
 #include <CGAL/Eigen_solver_traits.h>
-#ifdef CGAL_SWN_USE_CHOLMOD
-#include <Eigen/CholmodSupport>
-#endif
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -85,89 +85,8 @@ typedef No_linear_program_traits Default_linear_program_traits;
 typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<CGAL::Eigen_sparse_matrix<double>::EigenType>>
   Eigen_LDLT_sparse_solver;
 #ifdef CGAL_SWN_USE_CHOLMOD
-// CHOLMOD's supernodal Cholesky in the order of the matrix: the package numbers the unknowns of both
-// Laplacians by geometric nested dissection (internal/nested_dissection.h), which CHOLMOD's
-// orderings do not improve on at a fraction of their cost (a vertex Laplacian of 577k unknowns: AMD
-// analysis 0.87 s and 1.27e10 flops; nested dissection 0.4 s and 0.91e10 flops). Should the fill of
-// that order ever be far above what a surface mesh gives (more than 32 entries of L per entry of the
-// matrix; about 8 there), the analysis is redone with AMD. CHOLMOD's default, which also tries
-// METIS, costs more than it saves on these matrices (490k unknowns: 3.2 s with AMD, 4.8 s with the
-// default, 6.4 s with METIS alone).
-template <class EigenMatrix>
-class Cholmod_supernodal_in_given_order : public Eigen::CholmodSupernodalLLT<EigenMatrix>
-{
-public:
-  Cholmod_supernodal_in_given_order()
-  {
-    this->cholmod().nmethods = 1;
-    this->cholmod().method[0].ordering = CHOLMOD_NATURAL;
-  }
-
-  Cholmod_supernodal_in_given_order& compute(const EigenMatrix& A)
-  {
-    this->cholmod().method[0].ordering =
-      std::size_t(A.rows()) >= nested_dissection_unknowns ? CHOLMOD_NATURAL : CHOLMOD_AMD;
-    this->analyzePattern(A);
-    if(this->info() == Eigen::Success && this->cholmod().method[0].ordering == CHOLMOD_NATURAL &&
-       this->cholmod().lnz > 32. * double(A.nonZeros()) + 1000.)
-    {
-      this->cholmod().method[0].ordering = CHOLMOD_AMD;
-      this->analyzePattern(A);
-    }
-    this->factorize(A);
-    return *this;
-  }
-
-  // The result and the workspace of many-column solves, reused from one solve to the next (the
-  // CHOLMOD solve behind Eigen's solve() allocates them anew every time, and on the virtual machines
-  // of the benchmark first touches of memory cost more than the solve: benchmark/RESULTS.md, Speed).
-  // It has its own cholmod_common, so that threads with a workspace each may solve at once with the
-  // same factorization (CHOLMOD only reads the factor in a solve).
-  class Solve_workspace
-  {
-  public:
-    Solve_workspace() { cholmod_start(&common_); }
-    ~Solve_workspace()
-    {
-      for(cholmod_dense** d : {&X_, &Y_, &E_}) if(*d) cholmod_free_dense(d, &common_);
-      cholmod_finish(&common_);
-    }
-    Solve_workspace(const Solve_workspace&) = delete;
-    Solve_workspace& operator=(const Solve_workspace&) = delete;
-
-  private:
-    friend class Cholmod_supernodal_in_given_order;
-    cholmod_common common_;
-    cholmod_dense *X_ = nullptr, *Y_ = nullptr, *E_ = nullptr;
-  };
-
-  // A^-1 B for the k columns of B (n x k, column-major): a pointer to the n x k solution, held by `ws`
-  // until its next solve; nullptr if the solve failed. May be called by several threads at once with
-  // different workspaces.
-  const double* solve_with_workspace(const double* B, std::size_t n, std::size_t k, Solve_workspace& ws) const
-  {
-    if(!this->m_factorizationIsOk || this->info() != Eigen::Success || this->m_cholmodFactor == nullptr ||
-       std::size_t(this->m_cholmodFactor->n) != n)
-      return nullptr;
-    cholmod_dense b;
-    b.nrow = n;
-    b.ncol = k;
-    b.nzmax = n * k;
-    b.d = n;
-    b.x = const_cast<double*>(B);   // read only
-    b.z = nullptr;
-    b.xtype = CHOLMOD_REAL;
-    b.dtype = CHOLMOD_DOUBLE;
-    if(!cholmod_solve2(CHOLMOD_A, this->m_cholmodFactor, &b, nullptr, &ws.X_, nullptr, &ws.Y_, &ws.E_, &ws.common_) ||
-       ws.common_.status < CHOLMOD_OK)
-      return nullptr;
-    return static_cast<const double*>(ws.X_->x);
-  }
-};
-// (nested_dissection_unknowns: below it AMD's fill is smaller than that of the geometric nested
-// dissection (a 60 x 60 grid: 71k against 101k entries; the dual graph of a 30k-face scan: 1.3M
-// against 1.9M) and its analysis is cheap; the two break even in time between 40k and 100k unknowns.)
-typedef CGAL::Eigen_solver_traits<Cholmod_supernodal_in_given_order<CGAL::Eigen_sparse_matrix<double>::EigenType>>
+// CHOLMOD's analysis, the package's numeric factorization and solves (internal/supernodal_cholesky.h)
+typedef CGAL::Eigen_solver_traits<Supernodal_cholesky<CGAL::Eigen_sparse_matrix<double>::EigenType>>
   CHOLMOD_sparse_solver;
 typedef CHOLMOD_sparse_solver Default_sparse_solver;
 #else
@@ -259,7 +178,7 @@ The mesh must not be modified while the solver is in use.
         internally (\ref SWNAPISoup)
 \tparam SparseLinearSolver a model of `SparseLinearAlgebraWithFactorTraits_d` for symmetric positive
         definite systems; its instances are default-constructed (one per factorization).
-        Default: `CGAL::Eigen_solver_traits` over CHOLMOD's supernodal Cholesky factorization (nested-dissection numbering above 150k unknowns, AMD below)
+        Default: `CGAL::Eigen_solver_traits` over the package's supernodal Cholesky factorization on CHOLMOD's symbolic analysis (nested-dissection numbering above 150k unknowns, AMD below; the dense blocks with Eigen's kernels on the calling thread, not with the process's BLAS)
         when the package is built with CHOLMOD (`CGAL_SWN_USE_CHOLMOD`), otherwise
         `CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<CGAL::Eigen_sparse_matrix<double>::%EigenType> >`.
 */
