@@ -206,6 +206,14 @@ no common face, or two segments crossing inside a face (the result tells which).
     \cgalParamType{`std::size_t`}
     \cgalParamDefault{8}
   \cgalParamNEnd
+  \cgalParamNBegin{Surface_winding_numbers::parameters::face_origin_map}
+    \cgalParamDescription{an output: written for every face of `tm` after the cut (and the refinement) with the
+      face of the input it is a piece of; a face that was not cut gets itself. The pieces of an input face
+      tile it: their areas add up to its area. Not written when the curves are refused.}
+    \cgalParamType{a model of `WritablePropertyMap` with `boost::graph_traits<TriangleMesh>::%face_descriptor`
+      as key and value type, valid for the faces the cut adds (e.g. a property map of `CGAL::Surface_mesh`)}
+    \cgalParamDefault{none}
+  \cgalParamNEnd
 \cgalNamedParamsEnd
 
 \pre `tm` is a triangle mesh, and the coordinates of every location sum to 1 (negative ones are refused).
@@ -445,6 +453,8 @@ conforming_cut(TriangleMesh& tm, const CurveRange& curves, ChainMap chain,
   // ---- the cut (nothing was changed so far). The chain is kept as a flow on the halfedges.
   const std::size_t nv = num_vertices(tm), nf = num_faces(tm);
   auto flow = get(CGAL::dynamic_halfedge_property_t<Chain_value>(), tm);
+  auto origin = get(CGAL::dynamic_face_property_t<face_descriptor>(), tm);   // the input face of every piece
+  for(face_descriptor f : faces(tm)) put(origin, f, f);
   for(auto e : edges(tm))
     if(get(chain, e) != Chain_value(0)) put(flow, halfedge(e, tm), get(chain, e));
   for(std::size_t p = 0; p < points.size(); ++p)
@@ -481,7 +491,7 @@ conforming_cut(TriangleMesh& tm, const CurveRange& curves, ChainMap chain,
       chords.clear();
       for(std::size_t s : cf.chords) chords.emplace_back(points[segments[s].a].vertex, points[segments[s].b].vertex);
       // f keeps the piece with target(halfedge(f)), the first vertex of f for meshes read from files
-      internal::cut_and_triangulate_face(tm, vpm, f, cf.corner, chords, cf.corner[1], line, next_line);
+      internal::cut_and_triangulate_face(tm, vpm, f, cf.corner, chords, cf.corner[1], line, next_line, origin);
     }
   }
   // the curves on the edges
@@ -514,12 +524,17 @@ conforming_cut(TriangleMesh& tm, const CurveRange& curves, ChainMap chain,
   if(refine && min_edges > 1)
   {
     const std::size_t nv_cut = num_vertices(tm), nf_cut = num_faces(tm);
-    result.refined_pieces = internal::refine_short_pieces(tm, vpm, flow, min_edges);
+    result.refined_pieces = internal::refine_short_pieces(tm, vpm, flow, origin, min_edges);
     result.refinement_vertices = num_vertices(tm) - nv_cut;
     result.refinement_faces = num_faces(tm) - nf_cut;
   }
   for(auto e : edges(tm))
     put(chain, e, get(flow, halfedge(e, tm)) - get(flow, opposite(halfedge(e, tm), tm)));
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, snp::face_origin_map_t>::value)
+  {
+    auto face_origin = get_parameter(np, snp::face_origin_map);
+    for(face_descriptor f : faces(tm)) put(face_origin, f, get(origin, f));
+  }
   for(const auto& cp : curve_points)
   {
     result.curve_vertices.emplace_back();

@@ -26,6 +26,7 @@ enum minimum_piece_edges_t { minimum_piece_edges };
 enum projection_tolerance_t { projection_tolerance };
 enum filter_nonbounding_loops_t { filter_nonbounding_loops };
 enum dual_chain_t { dual_chain };
+enum face_origin_map_t { face_origin_map };
 } // namespace internal_np
 /// \endcond
 
@@ -106,6 +107,9 @@ CGAL_SWN_NAMED_PARAMETER(refine_short_pieces_t, refine_short_pieces)
 /// chain pieces with fewer edges than this (default 8) that end at an interior endpoint are refined
 CGAL_SWN_NAMED_PARAMETER(minimum_piece_edges_t, minimum_piece_edges)
 CGAL_SWN_NAMED_PARAMETER(dual_chain_t, dual_chain)
+/// face -> face: written for every face after the cut, the face of the input it is a piece of (faces not
+/// cut: themselves)
+CGAL_SWN_NAMED_PARAMETER(face_origin_map_t, face_origin_map)
 /// @}
 /// \name Settings of `polylines_to_chain()`
 /// @{

@@ -123,6 +123,11 @@ crossing.
     \cgalParamType{`std::size_t`}
     \cgalParamDefault{8}
   \cgalParamNEnd
+  \cgalParamNBegin{Surface_winding_numbers::parameters::face_origin_map}
+    \cgalParamDescription{an output, passed to `conforming_cut()`: for every face after the cut, the face of the input it is a piece of}
+    \cgalParamType{a model of `WritablePropertyMap` with `boost::graph_traits<TriangleMesh>::%face_descriptor` as key and value type}
+    \cgalParamDefault{none}
+  \cgalParamNEnd
 \cgalNamedParamsEnd
 
 \returns what was done, with warnings for the polylines that gave nothing (empty, or with no point near

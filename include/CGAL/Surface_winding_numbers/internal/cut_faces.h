@@ -59,15 +59,15 @@ face_loop(typename boost::graph_traits<TriangleMesh>::face_descriptor f, const T
   (so no triangle has three collinear vertices), the ear with the largest smallest angle first, and never
   an ear that would leave fewer than three corners. The descriptor `f` stays with the piece, and in the
   end the triangle, that has the corner `keep`, and `target(halfedge(f, tm))` is `keep`. New faces are
-  added with `add_face()` (appended, for `Surface_mesh`).
+  added with `add_face()` (appended, for `Surface_mesh`). Every piece gets `f` in `origin` (face -> face).
 */
-template <class TriangleMesh, class VertexPointMap, class LineMap>
+template <class TriangleMesh, class VertexPointMap, class LineMap, class OriginMap>
 void cut_and_triangulate_face(
   TriangleMesh& tm, VertexPointMap vpm, typename boost::graph_traits<TriangleMesh>::face_descriptor f,
   const std::array<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, 3>& corner,
   const std::vector<std::pair<typename boost::graph_traits<TriangleMesh>::vertex_descriptor,
                               typename boost::graph_traits<TriangleMesh>::vertex_descriptor> >& chords,
-  typename boost::graph_traits<TriangleMesh>::vertex_descriptor keep, LineMap line, int& next_line)
+  typename boost::graph_traits<TriangleMesh>::vertex_descriptor keep, LineMap line, int& next_line, OriginMap origin)
 {
   typedef boost::graph_traits<TriangleMesh> Traits;
   typedef typename Traits::halfedge_descriptor halfedge_descriptor;
@@ -117,6 +117,7 @@ void cut_and_triangulate_face(
     put(line, h, next_line);
     put(line, opposite(h, tm), next_line);
     ++next_line;
+    put(origin, face(opposite(h, tm), tm), f);
     pieces.push_back(face(opposite(h, tm), tm));
   }
 
@@ -159,6 +160,8 @@ void cut_and_triangulate_face(
       put(line, h, next_line);
       put(line, opposite(h, tm), next_line);
       ++next_line;
+      put(origin, face(h, tm), f);
+      put(origin, face(opposite(h, tm), tm), f);
       if(ear_keeps_f) piece = face(opposite(h, tm), tm);   // the rest moved to the new face
     }
   }

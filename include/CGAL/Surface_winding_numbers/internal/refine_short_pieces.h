@@ -28,9 +28,9 @@ namespace internal {
 
 // Splits the edge of `h` at its midpoint, joins the new vertex to the opposite vertex of each incident
 // face, and does the same, `rounds - 1` times, to both halves (2^rounds pieces in the end). The halves
-// carry the chain of the edge.
-template <class TriangleMesh, class VertexPointMap, class FlowMap>
-void split_chain_edge(TriangleMesh& tm, VertexPointMap vpm, FlowMap flow,
+// carry the chain of the edge. The faces made by a split get the `origin` (face -> face) of the face split.
+template <class TriangleMesh, class VertexPointMap, class FlowMap, class OriginMap>
+void split_chain_edge(TriangleMesh& tm, VertexPointMap vpm, FlowMap flow, OriginMap origin,
                       typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h, std::size_t rounds)
 {
   typedef typename boost::property_traits<VertexPointMap>::value_type Point;
@@ -41,21 +41,28 @@ void split_chain_edge(TriangleMesh& tm, VertexPointMap vpm, FlowMap flow,
   put(vpm, target(hnew, tm), Point((pu.x() + pv.x()) / 2, (pu.y() + pv.y()) / 2, (pu.z() + pv.z()) / 2));
   put(flow, hnew, get(flow, h));
   put(flow, opposite(hnew, tm), get(flow, opposite(h, tm)));
+  auto split = [&](typename boost::graph_traits<TriangleMesh>::halfedge_descriptor a,
+                   typename boost::graph_traits<TriangleMesh>::halfedge_descriptor b) {
+    const auto from = get(origin, face(a, tm));
+    const auto d = CGAL::Euler::split_face(a, b, tm);
+    put(origin, face(d, tm), from);
+    put(origin, face(opposite(d, tm), tm), from);
+  };
   if(!is_border(hnew, tm))
-    CGAL::Euler::split_face(hnew, next(h, tm), tm);
+    split(hnew, next(h, tm));
   const auto oh = opposite(h, tm), ohn = opposite(hnew, tm);   // v -> w, w -> u
   if(!is_border(oh, tm))
-    CGAL::Euler::split_face(oh, next(ohn, tm), tm);
-  split_chain_edge(tm, vpm, flow, hnew, rounds - 1);
-  split_chain_edge(tm, vpm, flow, h, rounds - 1);
+    split(oh, next(ohn, tm));
+  split_chain_edge(tm, vpm, flow, origin, hnew, rounds - 1);
+  split_chain_edge(tm, vpm, flow, origin, h, rounds - 1);
 }
 
 // The chain is cut into pieces at every vertex where its boundary is nonzero or where a number of chain
 // edges other than 2 meet; a piece with fewer than `min_edges` edges and an end at an interior endpoint
 // (nonzero boundary, not on the mesh border) has each edge split into 2^k edges,
 // k = max(1, floor(log2(floor(min_edges / n)))). Returns the number of refined pieces.
-template <class TriangleMesh, class VertexPointMap, class FlowMap>
-std::size_t refine_short_pieces(TriangleMesh& tm, VertexPointMap vpm, FlowMap flow, std::size_t min_edges)
+template <class TriangleMesh, class VertexPointMap, class FlowMap, class OriginMap>
+std::size_t refine_short_pieces(TriangleMesh& tm, VertexPointMap vpm, FlowMap flow, OriginMap origin, std::size_t min_edges)
 {
   typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
@@ -108,7 +115,7 @@ std::size_t refine_short_pieces(TriangleMesh& tm, VertexPointMap vpm, FlowMap fl
     while((std::size_t(1) << (k + 1)) <= q) ++k;
     k = (std::max<std::size_t>)(k, 1);   // every edge of a short piece is split at least once
     for(halfedge_descriptor h : piece)
-      split_chain_edge(tm, vpm, flow, h, k);
+      split_chain_edge(tm, vpm, flow, origin, h, k);
   }
   return short_pieces.size();
 }
