@@ -321,25 +321,25 @@ int main(int argc, char** argv)
       double total_area = 0;
       for(double a : area) total_area += a;
       auto err = [&](const std::vector<int>& L) { return error_percent(m, area, L, gt_t); };
-      const std::vector<double> weight = SB::eq11_weights(m, chain_t, epsilon);
-      const SB::Cells cells = SB::label_cells(m, chain_t, G_t, W, area);
-      const std::vector<SB::Flip> flips = SB::flip_costs(m, cells, chain_t, G_t, weight);
-      std::vector<std::size_t> largest(m.n_components, std::size_t(-1));
-      for(std::size_t c = 0; c < cells.area.size(); ++c)
-        if(largest[cells.component[c]] == std::size_t(-1) || cells.area[c] > cells.area[largest[cells.component[c]]]) largest[cells.component[c]] = c;
+      // the library's confidence (regions, flip costs, the second-best region)
+      const SI::Confidence confidence = SI::label_confidence(m, chain_t, G_t, W, epsilon);
+      const SI::Label_regions& cells = confidence.regions;
+      const std::vector<SI::Flip>& flips = confidence.flips;
       const std::vector<long> off = SB::best_offsets(m, area, W, gt_t);
       std::vector<char> wrong(m.nf, 0);
       std::vector<double> cell_wrong(cells.area.size(), 0.);
       for(std::size_t f = 0; f < m.nf; ++f)
         if(long(W[f]) - long(gt_t[f]) != off[m.face_component[f]]) { wrong[f] = 1; cell_wrong[cells.of_face[f]] += area[f]; }
-      std::size_t least = std::size_t(-1), worst = 0, eligible = 0;
+      std::size_t worst = 0, eligible = 0;
+      std::vector<std::size_t> largest(m.n_components, std::size_t(-1));
+      for(std::size_t c = 0; c < cells.area.size(); ++c)
+        if(largest[cells.component[c]] == std::size_t(-1) || cells.area[c] > cells.area[largest[cells.component[c]]]) largest[cells.component[c]] = c;
       for(std::size_t c = 0; c < cells.area.size(); ++c)
       {
         if(cell_wrong[c] > cell_wrong[worst]) worst = c;
-        if(c == largest[cells.component[c]] || cells.area[c] < 0.005 * total_area) continue;
-        ++eligible;
-        if(least == std::size_t(-1) || flips[c].cost < flips[least].cost) least = c;
+        eligible += c != largest[cells.component[c]] && cells.area[c] >= SI::second_best_min_area_fraction * total_area;
       }
+      const std::size_t least = confidence.second_best;
       // decomposition check: input = J W + G on every interior edge where the input is complete
       std::size_t mismatch = 0;
       for(const SI::Arc& a : m.arcs)

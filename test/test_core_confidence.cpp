@@ -1,6 +1,8 @@
-// The benchmark's per-region confidence (benchmark/bench_confidence.h) on analytic cases: flipping a
-// region bounded by complete input loops costs epsilon times their length in Eq. 11, in the one
-// direction that keeps G within the input's bounds.
+// The library's per-region confidence (internal/confidence.h, named parameters label_confidence,
+// confidence_map, region_map, second_best_label_map) on analytic cases: flipping a region bounded by
+// complete input loops costs epsilon times their length in Eq. 11, in the one direction that keeps G
+// within the input's bounds; a region between two loops that bound it from both sides cannot flip. And
+// the benchmark's simulated hints (benchmark/bench_confidence.h) on top of the regions.
 #include "test_core_support.h"
 
 #include <CGAL/Polygon_mesh_processing/measure.h>
@@ -11,55 +13,73 @@ namespace {
 
 namespace SB = swn_bench;
 
+// a solve of `polylines` with every confidence output, and the input
 struct Confidence_case
 {
-  std::vector<double> chain;
-  std::vector<long> G;
-  std::vector<int> W;
-  std::vector<double> area;
+  std::map<Mesh::Face_index, int> W, second;
+  std::map<Mesh::Face_index, double> cost;
+  std::map<Mesh::Face_index, std::size_t> region;
+  std::map<Mesh::Edge_index, int> chain, G;
+  SWN::Label_confidence conf;
 };
 
-// solves `polylines` on the mesh of `s` and returns everything per table index
-Confidence_case solve_case(Mesh& m, Solver& s, const std::vector<std::vector<Vertex>>& polylines)
+Confidence_case solve_case(Mesh& m, const std::vector<std::vector<Vertex>>& polylines, double epsilon = 0.01)
 {
-  auto chain = m.add_property_map<Mesh::Edge_index, int>("e:c", 0).first;
-  auto W = m.add_property_map<Mesh::Face_index, int>("f:W", 0).first;
-  auto G = m.add_property_map<Mesh::Edge_index, int>("e:G", 0).first;
-  for(const auto& p : polylines) EXPECT_TRUE(SWN::add_vertex_polyline_to_chain(m, p, chain));
-  EXPECT_TRUE(s.solve(chain, W, SWN::parameters::nonbounding_chain_map(G)));
-  const SI::Mesh_tables& t = s.tables();
   Confidence_case c;
-  c.chain.assign(t.ne, 0.);
-  c.G.assign(t.ne, 0);
-  c.W.assign(t.nf, 0);
-  c.area.assign(t.nf, 0.);
-  for(auto e : edges(m)) { c.chain[s.edge_index(e)] = chain[e]; c.G[s.edge_index(e)] = G[e]; }
-  for(auto f : faces(m))
-  {
-    c.W[s.face_index(f)] = W[f];
-    c.area[s.face_index(f)] = CGAL::Polygon_mesh_processing::face_area(f, m);
-  }
-  m.remove_property_map(chain);
-  m.remove_property_map(W);
-  m.remove_property_map(G);
+  for(auto e : edges(m)) c.chain[e] = 0;
+  auto chain = boost::make_assoc_property_map(c.chain);
+  for(const auto& p : polylines) EXPECT_TRUE(SWN::add_vertex_polyline_to_chain(m, p, chain));
+  namespace P = SWN::parameters;
+  EXPECT_TRUE(CGAL::surface_winding_numbers(m, chain, boost::make_assoc_property_map(c.W),
+    P::nonbounding_chain_map(boost::make_assoc_property_map(c.G), P::label_confidence(std::ref(c.conf),
+    P::confidence_map(boost::make_assoc_property_map(c.cost), P::region_map(boost::make_assoc_property_map(c.region),
+    P::second_best_label_map(boost::make_assoc_property_map(c.second), P::epsilon(epsilon))))))));
   return c;
 }
 
-// epsilon times the length of the edges where x is nonzero, in mean interior edge lengths
-double input_cost(const SI::Mesh_tables& t, const std::vector<double>& x, double epsilon)
+// epsilon times the length of the edges of `polylines`, in mean interior edge lengths (measured on the mesh)
+double input_cost(const Mesh& m, const std::vector<std::vector<Vertex>>& polylines, double epsilon)
 {
-  double len = 0;
-  for(std::size_t e = 0; e < t.ne; ++e)
-    if(x[e] != 0) len += t.edge_length(e);
-  return epsilon * len / SB::mean_interior_edge_length(t);
+  double mean = 0, len = 0;
+  std::size_t interior = 0;
+  for(auto e : edges(m))
+    if(!is_border(e, m)) { mean += CGAL::Polygon_mesh_processing::edge_length(e, m); ++interior; }
+  mean /= double(interior);
+  for(const auto& p : polylines)
+    for(std::size_t k = 0; k + 1 < p.size(); ++k) len += std::sqrt(CGAL::squared_distance(m.point(p[k]), m.point(p[k + 1])));
+  return epsilon * len / mean;
 }
 
-// the input is J W + G on every interior edge (the decomposition the flips keep)
-void expect_decomposition(const SI::Mesh_tables& t, const Confidence_case& c)
+// the region outputs agree with each other and with the labels; returns the faces of every region
+std::vector<std::vector<Mesh::Face_index>> check_regions(const Mesh& m, const Confidence_case& c)
 {
-  for(const SI::Arc& a : t.arcs)
-    EXPECT_EQ(std::lround(c.chain[a.edge]), long(c.W[a.left_side / 3]) - long(c.W[a.right_side / 3]) + c.G[a.edge])
-        << "edge " << a.edge;
+  std::vector<std::vector<Mesh::Face_index>> faces_of(c.conf.regions.size());
+  for(auto f : faces(m))
+  {
+    const std::size_t r = c.region.at(f);
+    EXPECT_LT(r, c.conf.regions.size());
+    if(r >= faces_of.size()) continue;
+    faces_of[r].push_back(f);
+    EXPECT_EQ(c.conf.regions[r].label, c.W.at(f));
+    EXPECT_EQ(c.cost.at(f), c.conf.regions[r].flip_cost);
+    const bool flipped = r == c.conf.second_best_region;
+    EXPECT_EQ(c.second.at(f), c.W.at(f) + (flipped ? c.conf.regions[r].flip_delta : 0));
+  }
+  for(std::size_t r = 0; r < faces_of.size(); ++r)
+  {
+    EXPECT_EQ(c.conf.regions[r].faces, faces_of[r].size());
+    double area = 0;
+    for(auto f : faces_of[r]) area += CGAL::Polygon_mesh_processing::face_area(f, m);
+    EXPECT_NEAR(c.conf.regions[r].area, area, 1e-9 * area);
+  }
+  // the input is J W + G on every edge (the decomposition the flips keep)
+  for(auto e : edges(m))
+    if(!is_border(e, m))
+    {
+      const auto h = halfedge(e, m);
+      EXPECT_EQ(c.chain.at(e), c.W.at(face(h, m)) - c.W.at(face(opposite(h, m), m)) + c.G.at(e));
+    }
+  return faces_of;
 }
 
 } // namespace
@@ -69,32 +89,30 @@ TEST(Confidence, RegionInsideACompleteLoopOnATorusCostsEpsilonTimesItsLength)
   Mesh m;
   const int nu = 24, nv = 12;
   const auto vs = torus_mesh(m, nu, nv);
-  Solver s(m);
-  const SI::Mesh_tables& t = s.tables();
   const std::vector<Vertex> meridian = meridian_piece(vs, nv, 3, 0, nv);
   const std::vector<Vertex> rect = rect_loop(torus_vertex(vs, nv), 10, 2, 14, 6);
-  const Confidence_case c = solve_case(m, s, {meridian, rect});
-  expect_decomposition(t, c);
-  const std::vector<double> weight = SB::eq11_weights(t, c.chain, 0.01);
-  const SB::Cells cells = SB::label_cells(t, c.chain, c.G, c.W, c.area);
-  ASSERT_EQ(cells.area.size(), 2u);   // the 4 x 4 cells inside the rectangle, and the rest
-  const std::size_t inside = cells.area[0] < cells.area[1] ? 0 : 1;
-  std::size_t n_inside = 0;
-  for(std::size_t f = 0; f < t.nf; ++f) n_inside += cells.of_face[f] == inside;
-  EXPECT_EQ(n_inside, 32u);
+  const Confidence_case c = solve_case(m, {meridian, rect});
+  const auto faces_of = check_regions(m, c);
+  ASSERT_EQ(c.conf.regions.size(), 2u);   // the 4 x 4 cells inside the rectangle, and the rest
+  const std::size_t inside = faces_of[0].size() < faces_of[1].size() ? 0 : 1;
+  EXPECT_EQ(faces_of[inside].size(), 32u);
+  EXPECT_TRUE(c.conf.regions[1 - inside].largest_in_component);
+  EXPECT_FALSE(c.conf.regions[inside].largest_in_component);
 
-  const std::vector<SB::Flip> flips = SB::flip_costs(t, cells, c.chain, c.G, weight);
-  const double expected = input_cost(t, table_chain(m, s, {rect}), 0.01);
-  EXPECT_NEAR(flips[inside].cost, expected, 1e-9 * expected);
-  EXPECT_NEAR(flips[1 - inside].cost, expected, 1e-9 * expected);   // the complement: the same move
-  // only the flip that empties the rectangle keeps G along the input's direction
-  std::size_t f_in = 0;
-  while(cells.of_face[f_in] != inside) ++f_in;
-  std::size_t f_out = 0;
-  while(cells.of_face[f_out] == inside) ++f_out;
-  EXPECT_EQ(c.W[f_in] + flips[inside].delta, c.W[f_out]);
+  const double expected = input_cost(m, {rect}, 0.01);
+  EXPECT_NEAR(c.conf.regions[inside].flip_cost, expected, 1e-9 * expected);
+  EXPECT_NEAR(c.conf.regions[1 - inside].flip_cost, expected, 1e-9 * expected);   // the complement: the same move
   // the boundary: the rectangle's length in mean interior edge lengths
-  EXPECT_NEAR(flips[inside].boundary, expected / 0.01, 1e-9 * expected / 0.01);
+  EXPECT_NEAR(c.conf.regions[inside].boundary_length, expected / 0.01, 1e-9 * expected / 0.01);
+  // only the flip that empties the rectangle keeps G along the input's direction: the second-best
+  // labeling is constant
+  EXPECT_EQ(c.W.at(faces_of[inside][0]) + c.conf.regions[inside].flip_delta, c.W.at(faces_of[1 - inside][0]));
+  EXPECT_EQ(c.conf.second_best_region, inside);
+  EXPECT_EQ(c.conf.second_best_cost, c.conf.regions[inside].flip_cost);
+  for(auto f : faces(m)) EXPECT_EQ(c.second.at(f), c.W.at(faces_of[1 - inside][0]));
+  // the cost scales with epsilon
+  const Confidence_case c2 = solve_case(m, {meridian, rect}, 0.02);
+  EXPECT_NEAR(c2.conf.second_best_cost, 2 * expected, 2e-9 * expected);
 }
 
 TEST(Confidence, BandBetweenTwoOppositeMeridiansFlipsIntoTwoNonboundingLoops)
@@ -102,25 +120,60 @@ TEST(Confidence, BandBetweenTwoOppositeMeridiansFlipsIntoTwoNonboundingLoops)
   Mesh m;
   const int nu = 20, nv = 10;
   const auto vs = torus_mesh(m, nu, nv);
-  Solver s(m);
-  const SI::Mesh_tables& t = s.tables();
   const std::vector<Vertex> a = meridian_piece(vs, nv, 3, 0, nv);
   std::vector<Vertex> b = meridian_piece(vs, nv, 9, 0, nv);
   std::reverse(b.begin(), b.end());
-  const Confidence_case c = solve_case(m, s, {a, b});
-  expect_decomposition(t, c);
-  for(long g : c.G) EXPECT_EQ(g, 0);   // the two loops bound the band
-  const std::vector<double> weight = SB::eq11_weights(t, c.chain, 0.01);
-  const SB::Cells cells = SB::label_cells(t, c.chain, c.G, c.W, c.area);
-  ASSERT_EQ(cells.area.size(), 2u);
-  const std::vector<SB::Flip> flips = SB::flip_costs(t, cells, c.chain, c.G, weight);
-  const double expected = input_cost(t, c.chain, 0.01);   // both meridians become G
-  for(std::size_t k = 0; k < 2; ++k) EXPECT_NEAR(flips[k].cost, expected, 1e-9 * expected);
-  // applying the flip: the labels become constant and G the input itself
-  std::vector<int> W2 = c.W;
-  for(std::size_t f = 0; f < t.nf; ++f)
-    if(cells.of_face[f] == 0) W2[f] += flips[0].delta;
-  for(std::size_t f = 1; f < t.nf; ++f) EXPECT_EQ(W2[f], W2[0]);
+  const Confidence_case c = solve_case(m, {a, b});
+  const auto faces_of = check_regions(m, c);
+  for(const auto& g : c.G) EXPECT_EQ(g.second, 0);   // the two loops bound the band
+  ASSERT_EQ(c.conf.regions.size(), 2u);
+  const double expected = input_cost(m, {a, b}, 0.01);   // both meridians become G
+  for(std::size_t k = 0; k < 2; ++k) EXPECT_NEAR(c.conf.regions[k].flip_cost, expected, 1e-9 * expected);
+  // the band (6 of 20 columns) is the second best region; flipped, the labels are constant
+  const std::size_t band = faces_of[0].size() < faces_of[1].size() ? 0 : 1;
+  EXPECT_EQ(faces_of[band].size(), std::size_t(2 * 6 * nv));
+  EXPECT_EQ(c.conf.second_best_region, band);
+  for(auto f : faces(m)) EXPECT_EQ(c.second.at(f), c.second.at(faces_of[0][0]));
+}
+
+TEST(Confidence, RegionBetweenTwoNestedLoopsCannotFlipAlone)
+{
+  // nested counter-clockwise squares on a disk: labels 2 / 1 / 0 from the inside out. The ring between
+  // them is bounded by input on both sides, with opposite signs of J 1_ring against the input: either
+  // direction of its flip reverses G against one of the squares (infinite cost). The inner square flips
+  // down at epsilon times its length; it makes the second-best labeling.
+  Mesh m;
+  const int n = 16;
+  const auto vs = grid_disk(m, n, 5);
+  const std::vector<Vertex> outer = square_loop(vs, n, 2, 2, 13, 13), inner = square_loop(vs, n, 5, 5, 9, 9);
+  const Confidence_case c = solve_case(m, {outer, inner});
+  const auto faces_of = check_regions(m, c);
+  ASSERT_EQ(c.conf.regions.size(), 3u);
+  for(std::size_t r = 0; r < 3; ++r)
+  {
+    const int label = c.conf.regions[r].label;
+    ASSERT_TRUE(label >= 0 && label <= 2);
+    if(label == 1)
+    {
+      EXPECT_EQ(c.conf.regions[r].flip_cost, inf);
+      EXPECT_EQ(c.conf.regions[r].flip_delta, 0);
+    }
+    if(label == 2)
+    {
+      const double expected = input_cost(m, {inner}, 0.01);
+      EXPECT_NEAR(c.conf.regions[r].flip_cost, expected, 1e-9 * expected);
+      EXPECT_EQ(c.conf.regions[r].flip_delta, -1);
+      EXPECT_EQ(c.conf.second_best_region, r);
+      EXPECT_EQ(faces_of[r].size(), std::size_t(2 * 4 * 4));
+    }
+    if(label == 0)
+    {
+      const double expected = input_cost(m, {outer}, 0.01);
+      EXPECT_NEAR(c.conf.regions[r].flip_cost, expected, 1e-9 * expected);
+      EXPECT_EQ(c.conf.regions[r].flip_delta, +1);
+      EXPECT_TRUE(c.conf.regions[r].largest_in_component);
+    }
+  }
 }
 
 TEST(Confidence, HintsRelabelARegionAndRedrawTheMissingRunNextToTheError)
@@ -156,7 +209,7 @@ TEST(Confidence, HintsRelabelARegionAndRedrawTheMissingRunNextToTheError)
     W[f] = inside_left[f] ? 1 : 0;
   }
   const std::vector<long> G(t.ne, 0);
-  const SB::Cells cells = SB::label_cells(t, full_d, G, W, area);
+  const SI::Label_regions cells = SI::label_regions(t, full_d, G, W);
   std::size_t right_cell = 0;
   while(!inside_right[right_cell]) ++right_cell;
   const std::vector<int> fixed = SB::relabel_cell(t, cells, cells.of_face[right_cell], area, W, gt);

@@ -165,6 +165,80 @@ TEST(WindingNumber, NormalizationZeroesTheLabelOfLargestAreaInEveryComponent)
   EXPECT_EQ(again, normalized);
 }
 
+TEST(WindingNumber, AnchorFaceGetsLabelZeroInItsComponentAndLabelDifferencesStay)
+{
+  // two disks, a counter-clockwise square on each: by default inside 1, outside 0. Anchored at a face
+  // inside the first square, the first disk's labels drop by one (inside 0, outside -1), w with them;
+  // the second disk and G do not change. The same through the polygon soup function.
+  Mesh m;
+  const int n = 8;
+  const auto a = grid_disk(m, n, 1), b = grid_disk(m, n, 2);
+  auto chain = m.add_property_map<Mesh::Edge_index, int>("e:c", 0).first;
+  ASSERT_TRUE(SWN::add_vertex_polyline_to_chain(m, square_loop(a, n, 1, 1, 4, 4), chain));
+  ASSERT_TRUE(SWN::add_vertex_polyline_to_chain(m, square_loop(b, n, 2, 2, 5, 5), chain));
+  auto W0 = m.add_property_map<Mesh::Face_index, int>("f:W0", 0).first;
+  auto W1 = m.add_property_map<Mesh::Face_index, int>("f:W1", 0).first;
+  auto w0 = m.add_property_map<Mesh::Halfedge_index, double>("h:w0", 0.).first;
+  auto w1 = m.add_property_map<Mesh::Halfedge_index, double>("h:w1", 0.).first;
+  Solver s(m);
+  ASSERT_TRUE(s.solve(chain, W0, SWN::parameters::winding_number_map(w0)));
+  const std::size_t first_disk = 2 * n * n;
+  Mesh::Face_index inside;
+  std::size_t ones = 0;
+  for(auto f : faces(m))
+  {
+    ASSERT_TRUE(W0[f] == 0 || W0[f] == 1);
+    if(std::size_t(f) < first_disk && W0[f] == 1) { inside = f; ++ones; }
+  }
+  ASSERT_EQ(ones, 18u);   // the 3 x 3 squares inside
+  ASSERT_TRUE(s.solve(chain, W1, SWN::parameters::label_anchor_face(inside, SWN::parameters::winding_number_map(w1))));
+  EXPECT_EQ(W1[inside], 0);
+  for(auto f : faces(m)) EXPECT_EQ(W1[f], W0[f] - (std::size_t(f) < first_disk ? 1 : 0));
+  for(auto h : halfedges(m))
+    if(!is_border(h, m)) EXPECT_NEAR(w1[h], w0[h] - (std::size_t(face(h, m)) < first_disk ? 1 : 0), 1e-12);
+  EXPECT_EQ(s.report().min_label, -1);
+  // the free function takes it too
+  auto W2 = m.add_property_map<Mesh::Face_index, int>("f:W2", 0).first;
+  ASSERT_TRUE(CGAL::surface_winding_numbers(m, chain, W2, SWN::parameters::label_anchor_face(inside)));
+  for(auto f : faces(m)) EXPECT_EQ(W2[f], W1[f]);
+
+  // a face that is not in the mesh: bad input, nothing written
+  SWN::Solve_report rep;
+  W2[inside] = 42;
+  EXPECT_FALSE(CGAL::surface_winding_numbers(m, chain, W2, SWN::parameters::label_anchor_face(
+    Mesh::Face_index(num_faces(m) + 3), SWN::parameters::report(std::ref(rep)))));
+  EXPECT_TRUE(rep.invalid_input);
+  EXPECT_NE(rep.error.find("label_anchor_face"), std::string::npos) << rep.error;
+  EXPECT_EQ(W2[inside], 42);
+
+  // the polygon soup of the same mesh, anchored at the same face (a polygon index)
+  std::vector<K::Point_3> points;
+  for(auto v : vertices(m)) points.push_back(m.point(v));
+  std::vector<std::array<std::size_t, 3>> triangles;
+  for(auto f : faces(m))
+  {
+    triangles.emplace_back();
+    std::size_t k = 0;
+    for(auto v : vertices_around_face(halfedge(f, m), m)) triangles.back()[k++] = std::size_t(v);
+  }
+  std::vector<std::pair<std::size_t, std::size_t>> curve;
+  for(auto e : edges(m))
+    for(int k = 0; k < std::abs(chain[e]); ++k)
+    {
+      const auto h = chain[e] > 0 ? halfedge(e, m) : opposite(halfedge(e, m), m);
+      curve.emplace_back(std::size_t(source(h, m)), std::size_t(target(h, m)));
+    }
+  std::vector<int> soup_labels(triangles.size(), 7);
+  ASSERT_TRUE(CGAL::polygon_soup_winding_numbers(points, triangles, curve, CGAL::make_property_map(soup_labels),
+                                                 SWN::parameters::label_anchor_face(std::size_t(inside))));
+  for(auto f : faces(m)) EXPECT_EQ(soup_labels[std::size_t(f)], W1[f]);
+  EXPECT_FALSE(CGAL::polygon_soup_winding_numbers(points, triangles, curve, CGAL::make_property_map(soup_labels),
+                                                  SWN::parameters::label_anchor_face(triangles.size(),
+                                                  SWN::parameters::report(std::ref(rep)))));
+  EXPECT_TRUE(rep.invalid_input);
+  EXPECT_NE(rep.error.find("out of range"), std::string::npos) << rep.error;
+}
+
 TEST(WindingNumber, BoundingChainIsTheClosedJumpOfTheLabels)
 {
   // on a disk, labels 1 inside a counter-clockwise loop (-1 inside its reverse): the bounding chain is

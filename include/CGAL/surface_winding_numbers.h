@@ -30,7 +30,8 @@ the inside of a counter-clockwise loop is one higher than the outside. Gaps are 
 nonbounding loops (around handles, or between border components) are filtered out.
 
 W is defined up to one integer per connected component; the normalization used is: in every
-connected component, the label covering the largest area is 0.
+connected component, the label covering the largest area is 0, unless the named parameter
+`label_anchor_face` names a face of the component, whose label is then 0.
 
 \tparam TriangleMesh a model of `FaceListGraph`; faces of more than three sides are triangulated
         internally and every output stays on the mesh's own faces and edges (\ref SWNAPISoup)
@@ -91,6 +92,26 @@ connected component, the label covering the largest area is 0.
     \cgalParamType{a model of `WritablePropertyMap`, key `halfedge_descriptor`, value `double`}
     \cgalParamDefault{not written}
   \cgalParamNEnd
+  \cgalParamNBegin{Surface_winding_numbers::parameters::label_confidence}
+    \cgalParamDescription{receives the regions of the labels (faces connected across edges where the curves, G and the jump of W are all zero) with their flip costs: how much Eq. 11's objective on the integer loops grows when a region's label changes by one, everything else fixed, and which flip makes the second-best labeling (user manual, \ref SWNConfidence). Computed only when this or one of the three maps below is given}
+    \cgalParamType{`std::reference_wrapper<CGAL::Surface_winding_numbers::Label_confidence>`}
+    \cgalParamDefault{not written}
+  \cgalParamNEnd
+  \cgalParamNBegin{Surface_winding_numbers::parameters::confidence_map}
+    \cgalParamDescription{receives for every face the flip cost of its region (`Label_region::flip_cost`): small means another labeling of that region explains the input almost as well; infinite when no flip of the region alone is feasible}
+    \cgalParamType{a model of `WritablePropertyMap`, key `face_descriptor`, value `double`}
+    \cgalParamDefault{not written}
+  \cgalParamNEnd
+  \cgalParamNBegin{Surface_winding_numbers::parameters::region_map}
+    \cgalParamDescription{receives for every face its region, an index into `Label_confidence::regions`}
+    \cgalParamType{a model of `WritablePropertyMap`, key `face_descriptor`, integer value}
+    \cgalParamDefault{not written}
+  \cgalParamNEnd
+  \cgalParamNBegin{Surface_winding_numbers::parameters::second_best_label_map}
+    \cgalParamDescription{receives the second-best labeling: the labels with the region `Label_confidence::second_best_region` changed by its `flip_delta` (not normalized again); the labels themselves where there is no such region}
+    \cgalParamType{a model of `WritablePropertyMap`, key `face_descriptor`, integer value}
+    \cgalParamDefault{not written}
+  \cgalParamNEnd
   \cgalParamNBegin{Surface_winding_numbers::parameters::epsilon}
     \cgalParamDescription{relative cost of jumps of the residual function across the curve against jumps elsewhere (paper Eq. 11)}
     \cgalParamType{`double`, positive}
@@ -111,6 +132,11 @@ connected component, the label covering the largest area is 0.
     \cgalParamDescription{`false`: the labels are the rounded jump-harmonic function u (with the shift of the paper's Sec. 3.5.1), without the filtering of the nonbounding part of the curves (the paper's Fig. 27): a loop around a handle then splits the surface along itself and along a contour of u that is not in the input; G and g are zero, and the solve is one jump-Laplace solve on any surface}
     \cgalParamType{Boolean}
     \cgalParamDefault{`true`}
+  \cgalParamNEnd
+  \cgalParamNBegin{Surface_winding_numbers::parameters::label_anchor_face}
+    \cgalParamDescription{a face whose label is 0: fixes the additive constant of W on its connected component (for instance a face known to be outside, so that outside is 0 after a stamp); the other components keep the largest-area rule. The differences of labels, G, g and the bounding chain do not depend on it; `winding_number_map` is shifted with the labels. `boost::graph_traits<TriangleMesh>::%null_face()` keeps the default rule. A face that is neither in `faces(tm)` nor the null face makes the solve fail as on bad input}
+    \cgalParamType{`boost::graph_traits<TriangleMesh>::%face_descriptor`}
+    \cgalParamDefault{none: the label covering the largest area of each component is 0}
   \cgalParamNEnd
   \cgalParamNBegin{Surface_winding_numbers::parameters::concurrent_factorizations}
     \cgalParamDescription{when the curve has interior endpoints on a mesh with handles, computes the per-mesh part of the Hodge projection (the harmonic basis, or the factorized 2-form Laplacian on meshes with more than 24 homology classes) on a second thread (`std::async`) while the first jump-Laplace system is factorized and solved; same results either way. Set it to `false` if the sparse linear solver cannot run two factorizations at once}

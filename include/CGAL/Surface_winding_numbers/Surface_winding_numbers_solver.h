@@ -6,6 +6,7 @@
 
 #include <CGAL/Surface_winding_numbers/Solve_report.h>
 #include <CGAL/Surface_winding_numbers/parameters.h>
+#include <CGAL/Surface_winding_numbers/internal/confidence.h>
 #include <CGAL/Surface_winding_numbers/internal/descriptor_checks.h>
 #include <CGAL/Surface_winding_numbers/internal/locality_order.h>
 #include <CGAL/Surface_winding_numbers/internal/pipeline.h>
@@ -119,9 +120,10 @@ bool run_and_report(Solve_report& rep, F f)
 
 // One solve of `chain` (per table edge) with the settings of the named parameters: epsilon,
 // verbose, use_reduced_residual, concurrency, keep_hodge_factorization, filter_nonbounding_loops and lp_solver.
+// `anchor_face`: the table face of the named parameter label_anchor_face (npos: none), found by the caller.
 template <class LA, class NamedParameters>
 Core_result solve_with_parameters(Winding_number_core<LA>& core, const std::vector<double>& chain,
-                                  const NamedParameters& np, Solve_report& rep)
+                                  const NamedParameters& np, Solve_report& rep, std::size_t anchor_face = npos)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -134,6 +136,7 @@ Core_result solve_with_parameters(Winding_number_core<LA>& core, const std::vect
   options.concurrent = allows_threads(choose_parameter(get_parameter(np, snp::concurrency), CGAL::Parallel_tag()));
   options.keep_hodge_factorization = choose_parameter(get_parameter(np, snp::keep_hodge_factorization), true);
   options.filter_nonbounding = choose_parameter(get_parameter(np, snp::filter_nonbounding_loops), true);
+  options.anchor_face = anchor_face;
   if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, snp::lp_solver_t>::value)
   {
     Default_linear_program_traits lp;
@@ -253,8 +256,9 @@ public:
   \param label_map receives the winding number label W of every face
   \param np optional named parameters among `nonbounding_chain_map`, `nonbounding_chain_real_map`,
          `bounding_chain_map`, `winding_number_map`, `epsilon`, `lp_solver`, `use_reduced_residual`,
-         `filter_nonbounding_loops`, `concurrency`, `keep_hodge_factorization`, `report`, `verbose`
-         (see `CGAL::surface_winding_numbers()`).
+         `filter_nonbounding_loops`, `label_anchor_face`, `label_confidence`, `confidence_map`, `region_map`,
+         `second_best_label_map`, `concurrency`, `keep_hodge_factorization`, `report`, `verbose` (see
+         `CGAL::surface_winding_numbers()`).
   \pre `chain_map`, `label_map` and the output maps of `np` have a value for every element of `tm` they
        are keyed by. A `Surface_mesh` property map with fewer entries (a map of another mesh) is detected:
        the solve fails as on bad input, before any map is read or written.
@@ -273,9 +277,10 @@ public:
       check_maps(chain_map, label_map, np);
       std::vector<double> chain(core_->tables().ne, 0.);
       for(edge_descriptor e : edges(tm_)) chain[get(eim_, e)] = double(get(chain_map, e));
-      const internal::Core_result r = internal::solve_with_parameters(*core_, chain, np, rep);
+      const internal::Core_result r = internal::solve_with_parameters(*core_, chain, np, rep, anchor_face(np));
       internal::Stopwatch clock;
       write_outputs(r, label_map, np);
+      write_confidence(r, chain, np);
       rep.time_output_maps = clock.lap();
     });
     report_ = rep;
@@ -292,6 +297,23 @@ public:
   /// \endcond
 
 private:
+  // the table face of the named parameter label_anchor_face (npos if none or null_face()); a face not in faces(tm_) is refused
+  template <class NamedParameters>
+  std::size_t anchor_face(const NamedParameters& np) const
+  {
+    namespace snp = Surface_winding_numbers::internal_np;
+    if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, snp::label_anchor_face_t>::value)
+      return internal::npos;
+    else
+    {
+      const face_descriptor a = CGAL::parameters::get_parameter(np, snp::label_anchor_face);
+      if(a == GT::null_face()) return internal::npos;
+      for(face_descriptor f : faces(tm_))
+        if(f == a) return core_->tables().polygon_triangle(get(fim_, f));
+      throw Invalid_input("label_anchor_face: the face is not a face of the mesh");
+    }
+  }
+
   template <class VPM, class Traits>
   internal::Mesh_tables mesh_tables(const VPM& vpm, const Traits& traits)
   {
@@ -403,6 +425,55 @@ private:
     check_map<snp::nonbounding_chain_real_map_t>(np, snp::nonbounding_chain_real_map, edges(tm_), "nonbounding_chain_real_map", "edges");
     check_map<snp::bounding_chain_map_t>(np, snp::bounding_chain_map, edges(tm_), "bounding_chain_map", "edges");
     check_map<snp::winding_number_map_t>(np, snp::winding_number_map, halfedges(tm_), "winding_number_map", "halfedges");
+    check_map<snp::confidence_map_t>(np, snp::confidence_map, faces(tm_), "confidence_map", "faces");
+    check_map<snp::region_map_t>(np, snp::region_map, faces(tm_), "region_map", "faces");
+    check_map<snp::second_best_label_map_t>(np, snp::second_best_label_map, faces(tm_), "second_best_label_map", "faces");
+  }
+
+  // the confidence outputs (label_confidence, confidence_map, region_map, second_best_label_map), computed
+  // only when one of them is asked for
+  template <class NamedParameters>
+  void write_confidence(const internal::Core_result& r, const std::vector<double>& chain, const NamedParameters& np) const
+  {
+    using CGAL::parameters::get_parameter;
+    using CGAL::parameters::is_default_parameter;
+    namespace snp = Surface_winding_numbers::internal_np;
+    constexpr bool conf = !is_default_parameter<NamedParameters, snp::label_confidence_t>::value;
+    constexpr bool cmap = !is_default_parameter<NamedParameters, snp::confidence_map_t>::value;
+    constexpr bool rmap = !is_default_parameter<NamedParameters, snp::region_map_t>::value;
+    constexpr bool smap = !is_default_parameter<NamedParameters, snp::second_best_label_map_t>::value;
+    if constexpr(conf || cmap || rmap || smap)
+    {
+      const internal::Mesh_tables& m = core_->tables();
+      const double epsilon = CGAL::parameters::choose_parameter(get_parameter(np, snp::epsilon), 0.01);
+      const internal::Confidence c = internal::label_confidence(m, chain, r.G, r.labels, epsilon);
+      auto region = [&](face_descriptor f) { return c.regions.of_face[m.polygon_triangle(get(fim_, f))]; };
+      if constexpr(conf)
+        CGAL::parameters::get_parameter_reference(np, snp::label_confidence) = internal::public_confidence(m, c, r.labels);
+      if constexpr(cmap)
+      {
+        auto map = get_parameter(np, snp::confidence_map);
+        typedef typename boost::property_traits<decltype(map)>::value_type V;
+        for(face_descriptor f : faces(tm_)) put(map, f, static_cast<V>(c.flips[region(f)].cost));
+      }
+      if constexpr(rmap)
+      {
+        auto map = get_parameter(np, snp::region_map);
+        typedef typename boost::property_traits<decltype(map)>::value_type V;
+        for(face_descriptor f : faces(tm_)) put(map, f, static_cast<V>(region(f)));
+      }
+      if constexpr(smap)
+      {
+        auto map = get_parameter(np, snp::second_best_label_map);
+        typedef typename boost::property_traits<decltype(map)>::value_type V;
+        for(face_descriptor f : faces(tm_))
+        {
+          const std::size_t k = region(f);
+          const int flip = k == c.second_best ? c.flips[k].delta : 0;
+          put(map, f, static_cast<V>(r.labels[m.polygon_triangle(get(fim_, f))] + flip));
+        }
+      }
+    }
   }
 
   template <class Tag, class NamedParameters, class Values>

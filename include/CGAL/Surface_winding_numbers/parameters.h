@@ -27,6 +27,11 @@ enum projection_tolerance_t { projection_tolerance };
 enum filter_nonbounding_loops_t { filter_nonbounding_loops };
 enum dual_chain_t { dual_chain };
 enum face_origin_map_t { face_origin_map };
+enum label_anchor_face_t { label_anchor_face };
+enum label_confidence_t { label_confidence };
+enum confidence_map_t { confidence_map };
+enum region_map_t { region_map };
+enum second_best_label_map_t { second_best_label_map };
 } // namespace internal_np
 /// \endcond
 
@@ -66,6 +71,16 @@ CGAL_SWN_NAMED_PARAMETER(bounding_chain_map_t, bounding_chain_map)
 CGAL_SWN_NAMED_PARAMETER(winding_number_map_t, winding_number_map)
 /// `std::ref(Solve_report)`: what the solve did, and why it failed
 CGAL_SWN_NAMED_PARAMETER(report_t, report)
+/// `std::ref(Label_confidence)`: the regions of the labels with their flip costs (\ref SWNConfidence)
+CGAL_SWN_NAMED_PARAMETER(label_confidence_t, label_confidence)
+/// face -> double: the flip cost of the face's region, its confidence (infinite: no flip of the region alone
+/// is feasible)
+CGAL_SWN_NAMED_PARAMETER(confidence_map_t, confidence_map)
+/// face -> `std::size_t`: the face's region, an index into `Label_confidence::regions`
+CGAL_SWN_NAMED_PARAMETER(region_map_t, region_map)
+/// face -> integer: the second-best labeling, the labels with the region `Label_confidence::second_best_region`
+/// flipped (the labels themselves where there is none)
+CGAL_SWN_NAMED_PARAMETER(second_best_label_map_t, second_best_label_map)
 /// @}
 /// \name Settings
 /// @{
@@ -98,6 +113,11 @@ CGAL_SWN_NAMED_PARAMETER(keep_hodge_factorization_t, keep_hodge_factorization)
 /// along itself and along a contour of u that does not belong to the input, G and g are zero, and the solve
 /// is one jump-Laplace solve on any surface
 CGAL_SWN_NAMED_PARAMETER(filter_nonbounding_loops_t, filter_nonbounding_loops)
+/// a face (a `face_descriptor`; for `CGAL::polygon_soup_winding_numbers()`, a polygon index) whose label is
+/// 0: it fixes the additive constant of the labels of its connected component (the other components keep
+/// the default rule, the label covering the largest area is 0). `null_face()` (for soups `std::size_t(-1)`)
+/// keeps the default rule everywhere. A face that is not a face of the mesh is refused as bad input
+CGAL_SWN_NAMED_PARAMETER(label_anchor_face_t, label_anchor_face)
 /// @}
 /// \name Settings of `conforming_cut()`
 /// @{

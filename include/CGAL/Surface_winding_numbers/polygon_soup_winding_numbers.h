@@ -65,6 +65,7 @@ lives on the input's polygons, corners and edges.
 \param labels receives W for every polygon
 \param np an optional sequence of named parameters: those of `CGAL::surface_winding_numbers()` (`epsilon`,
        `lp_solver`, `use_reduced_residual`, `filter_nonbounding_loops`, `concurrency`, `report`, `verbose`,
+       `label_anchor_face` (here a polygon index; `std::size_t(-1)`: none),
        `sparse_linear_solver`), and
        `dual_chain`: a range of pairs `(a, b)` of polygon indices (as `std::pair` or `std::array`), each
        adding a jump of +1 from polygon `a` into polygon `b` across the edge they share (paper Sec. 3.7, the
@@ -123,7 +124,16 @@ bool polygon_soup_winding_numbers(const PointRange& points, const PolygonRange& 
     }
     if constexpr(!parameters::is_default_parameter<NamedParameters, snp::dual_chain_t>::value)
       SI::add_dual_chain(m, parameters::get_parameter(np, snp::dual_chain), chain);
-    const SI::Core_result r = SI::solve_with_parameters(core, chain, np, rep);
+    std::size_t anchor = SI::npos;
+    if constexpr(!parameters::is_default_parameter<NamedParameters, snp::label_anchor_face_t>::value)
+    {
+      const std::size_t p = std::size_t(parameters::get_parameter(np, snp::label_anchor_face));
+      if(p != SI::npos && p >= m.number_of_polygons())
+        throw SWN::Invalid_input("label_anchor_face: polygon " + std::to_string(p) + " is out of range (" +
+                                 std::to_string(m.number_of_polygons()) + " polygons)");
+      if(p != SI::npos) anchor = m.polygon_triangle(p);
+    }
+    const SI::Core_result r = SI::solve_with_parameters(core, chain, np, rep, anchor);
     rep.time_mesh = time_mesh;
     typedef typename boost::property_traits<LabelMap>::value_type Label;
     for(std::size_t p = 0; p < m.number_of_polygons(); ++p) put(labels, p, static_cast<Label>(r.labels[m.polygon_triangle(p)]));

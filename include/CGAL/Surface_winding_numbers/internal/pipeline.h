@@ -44,6 +44,7 @@ struct Solve_options
   bool keep_hodge_factorization = true;    // false: freed after the harmonic part, before the residual
   bool filter_nonbounding = true;   // false: the labels contour u itself (paper Sec. 5.5, Fig. 27), no G
   std::size_t harmonic_basis_max_classes = internal::harmonic_basis_max_classes;   // else the 2-form Laplacian
+  std::size_t anchor_face = npos;   // a table face whose label becomes 0 in its component (npos: largest area)
 };
 
 struct Core_result
@@ -121,6 +122,7 @@ public:
     const bool verbose = options.verbose;
     if(chain.size() != m_.ne) throw Invalid_input("the chain has the wrong size");
     if(!(epsilon > 0) || !std::isfinite(epsilon)) throw Invalid_input("epsilon must be positive and finite");
+    if(options.anchor_face != npos && options.anchor_face >= m_.nf) throw Invalid_input("the anchor face is out of range");
     Stopwatch clock, total;
     fill_mesh_report(rep);
     rep.dropped_curve_edges = 0;
@@ -275,7 +277,7 @@ public:
     // W: shift tau, rounding, normalization; G; bounding chain
     const std::vector<double> tau = shift_tau(m_, chain, r.w);
     r.labels = round_labels(m_, r.w, tau);
-    const std::vector<int> offset = normalize_labels(m_, r.labels);
+    const std::vector<int> offset = normalize_labels(m_, r.labels, options.anchor_face);
     for(std::size_t k = 0; k < 3 * m_.nf; ++k)
     {
       const std::size_t c = m_.face_component[k / 3];

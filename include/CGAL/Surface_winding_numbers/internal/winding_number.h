@@ -129,8 +129,9 @@ inline std::vector<int> round_labels(const Mesh_tables& m, const std::vector<dou
 }
 
 // Label normalization: in every component the label covering the largest area becomes 0 (ties:
-// the label of smallest magnitude, then the smallest). Returns the per-component offset subtracted.
-inline std::vector<int> normalize_labels(const Mesh_tables& m, std::vector<int>& W)
+// the label of smallest magnitude, then the smallest); in the component of the face `anchor` (npos:
+// none), the label of that face becomes 0 instead. Returns the per-component offset subtracted.
+inline std::vector<int> normalize_labels(const Mesh_tables& m, std::vector<int>& W, std::size_t anchor = npos)
 {
   std::vector<std::map<int, double>> area(m.n_components);
   for(std::size_t f = 0; f < m.nf; ++f) area[m.face_component[f]][W[f]] += m.face_area(f);
@@ -146,6 +147,7 @@ inline std::vector<int> normalize_labels(const Mesh_tables& m, std::vector<int>&
       if(better) { offset[c] = la.first; best = la.second; first = false; }
     }
   }
+  if(anchor != npos) offset[m.face_component[anchor]] = W[anchor];
   for(std::size_t f = 0; f < m.nf; ++f) W[f] -= offset[m.face_component[f]];
   return offset;
 }
