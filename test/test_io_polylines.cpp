@@ -4,6 +4,8 @@
 
 #include "test_io_support.h"
 
+#include <sstream>
+
 using namespace swn_test;
 
 namespace {
@@ -14,7 +16,9 @@ TEST(ObjPolylines, PointsAndPolylinesOneBasedNegativeAndClosed)
 {
   TempDir dir;
   write_file(dir / "p.obj", "# strokes\nv 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\nl 1 2 3 1\nv 0 1 2.5\nl -1 -2\n");
-  const auto p = IO::read_obj_polylines(dir / "p.obj");
+  const auto r = IO::read_obj_polylines(dir / "p.obj");
+  const auto& p = r.polylines;
+  EXPECT_EQ(r.lines, (std::vector<std::size_t>{6, 8}));
   ASSERT_EQ(p.size(), 2u);
   ASSERT_EQ(p[0].size(), 4u);
   EXPECT_EQ(p[0][2], (std::array<double, 3>{1, 1, 0}));
@@ -38,6 +42,10 @@ TEST(ObjPolylines, BadInputNamesFileAndLine)
   EXPECT_NE(error_of("v 0 0 0\nl 1 x\n").find("bad.obj:2: cannot parse index 'x'"), std::string::npos);
   EXPECT_NE(error_of("v 0 0 0\n").find("bad.obj: no polyline"), std::string::npos);
   EXPECT_NE(error_of("v 0 0\n").find("bad.obj:1:"), std::string::npos);
+  EXPECT_NE(error_of("v 0 0 0\n#offset 9223372036854775807\nl 2 1\n").find("bad.obj:3: index '2' does not name a point"),
+            std::string::npos) << "the offset overflows: out of range, not undefined behaviour";
+  std::istringstream in("v 0 0 0\nv 1 0 0\nl 1 2\n");
+  EXPECT_EQ(IO::read_obj_polylines(in, "stream.obj").lines, (std::vector<std::size_t>{3}));
 }
 
 TEST(Svg, PathCommandsAbsoluteAndRelative)
@@ -62,6 +70,7 @@ TEST(Svg, PathCommandsAbsoluteAndRelative)
   EXPECT_EQ(d.polylines[2], (Polyline_2{{0, 0}, {1, 1}, {2, 0}}));
   EXPECT_EQ(d.polylines[3], (Polyline_2{{0, 0}, {4, 0}, {4, 4}, {0, 0}})) << "a polygon is closed";
   EXPECT_EQ(d.polylines[4], (Polyline_2{{1, 1}, {2, 3}}));
+  EXPECT_EQ(d.lines, (std::vector<std::size_t>{5, 5, 6, 7, 8})) << "each polyline's element line";
 }
 
 TEST(Svg, UnsupportedElementsWarnCurvesAndTransformsAreErrors)
@@ -72,6 +81,9 @@ TEST(Svg, UnsupportedElementsWarnCurvesAndTransformsAreErrors)
   ASSERT_EQ(d.warnings.size(), 1u);
   EXPECT_NE(d.warnings[0].find("w.svg:2: <circle> is not supported and is ignored"), std::string::npos) << d.warnings[0];
   EXPECT_EQ(d.polylines.size(), 1u);
+  // markup inside a quoted attribute value is text, not an element
+  write_file(dir / "q.svg", "<svg>\n<path d=\"M 10 10 L 90 10 L 90 90 Z\" data-note=\"a>b <path d='M 0 0 L 100 100'/>\"/>\n</svg>\n");
+  EXPECT_EQ(IO::read_svg_polylines(dir / "q.svg").polylines.size(), 1u);
 
   auto error_of = [&](const std::string& content) {
     write_file(dir / "bad.svg", content);
@@ -87,6 +99,10 @@ TEST(Svg, UnsupportedElementsWarnCurvesAndTransformsAreErrors)
   EXPECT_NE(error_of("<svg><path d=\"M0 0 L1 x\"/></svg>").find("bad.svg:1: a number was expected"), std::string::npos);
   EXPECT_NE(error_of("<svg><circle r=\"1\"/></svg>").find("bad.svg: no polyline"), std::string::npos);
   EXPECT_NE(error_of("<svg><path d=\"M0 0 L1 1\"").find("bad.svg:1: unterminated"), std::string::npos);
+  EXPECT_NE(error_of("<svg>\n<path d=\"m 1e308 0 1e308 0 l 1 1\"/></svg>").find("bad.svg:2: the path's coordinates add up to a number that is not finite"),
+            std::string::npos) << "relative moves that overflow";
+  EXPECT_NE(error_of("<svg>\n<line x1=\"-1e308\" x2=\"1e308\"/></svg>").find("bad.svg:2: the drawing's extent is not a finite number"),
+            std::string::npos);
 }
 
 } // namespace

@@ -127,8 +127,8 @@ TEST(ToolCurves, BadFilesGiveFileLineOrAWarning)
   EXPECT_NE(r.err.find("nan.obj:2: vertex coordinate is not finite"), std::string::npos) << r.err;
   r = run(mesh + " --polylines " + write("far.obj", "v 0 0 3\nv 0 1 3\nv 1 1 3\nl 1 2 3\n"));
   EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.err.find("far.obj: no curve on the surface"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("warning: " + (dir / "far.obj").string() + ": polyline 0: no point within"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("far.obj: no curve on the surface (every point is farther"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("warning: " + (dir / "far.obj").string() + ":4: polyline 0: no point within"), std::string::npos) << r.err;
   r = run(mesh + " --stamp " + write("curve.svg", "<svg>\n<path d=\"M0 0 Q 1 1 2 0\"/>\n</svg>\n"));
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("curve.svg:2: path command 'Q' is not supported"), std::string::npos) << r.err;
@@ -139,6 +139,161 @@ TEST(ToolCurves, BadFilesGiveFileLineOrAWarning)
   r = run(mesh + " --stamp " + (dir / "circle.svg").string() + " --direction 0,0");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("--direction needs three numbers"), std::string::npos) << r.err;
+  fs::remove_all(dir);
+}
+
+// the number after "KEY": in `json` (the first one at or after `from`); -1 if none
+double json_number(const std::string& json, const std::string& key, std::size_t from = 0)
+{
+  std::smatch m;
+  const std::regex number("\"" + key + "\":\\s*(-?[0-9.eE+]+)");
+  const std::string tail = json.substr(std::min(from, json.size()));
+  return std::regex_search(tail, m, number) ? std::stod(m[1]) : -1;
+}
+
+// grid4.off: the square [0,3]^2 in z = 0, 3 x 3 unit squares split along (i,j)-(i+1,j+1), normals +z
+const std::string grid = "'" + std::string(SWN_TEST_DATA_DIR) + "/grid4.off'";
+
+TEST(ToolCurves, PolylinesReportTheLibrarysCountsOnConsoleAndInSummary)
+{
+  const fs::path dir = fresh_dir("report_polylines");
+  fs::create_directories(dir);
+  // y = 0.25 from x = 0.5 to 2.5 crosses x = 1, the diagonal at 1.25, x = 2 and the diagonal at 2.25: four
+  // vertices cut in, none near an edge's end; the third point, 5 above the grid, is off the surface
+  std::ofstream(dir / "stroke.obj") << "# a stroke\nv 0.5 0.25 0\nv 2.5 0.25 0\nv 2.5 0.25 5\n\nl 1 2 3\n";
+  const std::string file = (dir / "stroke.obj").string();
+  const Tool_run r = run(grid + " --polylines '" + file + "' --output-dir '" + (dir / "out").string() + "'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("polylines " + file + ": 1 polylines, 3 points (1 off the surface), 0 failed walks, 0 dropped "
+                       "crossings: 1 curves; cut: 4 vertices added"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("warning: " + file + ":6: polyline 0: 1 of its 3 points are farther than the mean edge length"),
+            std::string::npos) << "a stroke that loses points warns, with its `l` line: " << r.err;
+  const std::string summary = slurp((dir / "out" / "summary.json").string());
+  const std::size_t at = summary.find("\"curves_off_mesh\"");
+  ASSERT_NE(at, std::string::npos) << summary;
+  EXPECT_EQ(json_number(summary, "points", at), 3);
+  EXPECT_EQ(json_number(summary, "points_off_surface", at), 1);
+  EXPECT_EQ(json_number(summary, "failed_walks", at), 0);
+  EXPECT_EQ(json_number(summary, "dropped_crossings", at), 0);
+  EXPECT_EQ(json_number(summary, "curves", at), 1);
+  EXPECT_EQ(json_number(summary, "cut_vertices", at), 4);
+  // the solved mesh is the grid with the vertices of the cut and of the refinement, counted in solved_mesh
+  const double cut = json_number(summary, "cut_new_vertices"), refined = json_number(summary, "refine_new_vertices");
+  EXPECT_EQ(cut, 4) << summary;
+  EXPECT_EQ(refined, json_number(summary, "refinement_vertices", at));
+  EXPECT_EQ(json_number(summary, "vertices", summary.find("\"solved_mesh\"")), 16 + cut + refined) << summary;
+  EXPECT_EQ(json_number(summary, "interior_endpoints"), 2);
+
+  // --verbose: the polyline's details on stderr
+  const Tool_run v = run(grid + " --polylines '" + file + "' --verbose");
+  EXPECT_NE(v.err.find("[swn] " + file + ":6: polyline 0: 1 of its 3 points"), std::string::npos) << v.err;
+  fs::remove_all(dir);
+}
+
+TEST(ToolCurves, StampReportsItsPolylinesAndSaysWhenTheDirectionSeesTheBack)
+{
+  const fs::path dir = fresh_dir("report_stamp");
+  fs::create_directories(dir);
+  std::ofstream(dir / "square.svg") << "<svg>\n<polygon points=\"0 0 10 0 10 10 0 10\"/>\n</svg>\n";
+  const std::string svg = "'" + (dir / "square.svg").string() + "'";
+  Tool_run r = run(grid + " --stamp " + svg + " --output-dir '" + (dir / "out").string() + "'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string summary = slurp((dir / "out" / "summary.json").string());
+  const std::size_t at = summary.find("\"curves_off_mesh\"");
+  ASSERT_NE(at, std::string::npos) << summary;
+  EXPECT_NE(summary.find("\"kind\": \"stamp\"", at), std::string::npos) << summary;
+  EXPECT_EQ(json_number(summary, "polylines", at), 1);
+  EXPECT_EQ(json_number(summary, "stamped_polylines", at), 1);
+  EXPECT_EQ(json_number(summary, "points_off_surface", at), 0);
+  EXPECT_EQ(json_number(summary, "curves", at), 1);
+  EXPECT_EQ(json_number(summary, "cut_new_vertices"), json_number(summary, "cut_vertices", at));
+  EXPECT_GT(json_number(summary, "cut_vertices", at), 0) << "the square's sides cross the grid's edges";
+  EXPECT_NE(r.out.find("stamp " + (dir / "square.svg").string() + ": 1 polylines stamped as 1,"), std::string::npos) << r.out;
+
+  // the grid's faces look up (+z): stamped along +z every ray meets their back
+  r = run(grid + " --stamp " + svg + " --direction 0,0,1");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("square.svg: nothing stamped: along --direction 0,0,1 every ray misses the mesh or meets the back "
+                       "of its faces"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("the opposite direction meets their front"), std::string::npos) << r.err;
+  r = run(grid + " --stamp " + svg + " --direction 1,0,0");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("square.svg: the stamped drawing misses the mesh (along --direction 1,0,0 and the opposite"),
+            std::string::npos) << r.err;
+  fs::remove_all(dir);
+}
+
+TEST(ToolCurves, MessagesNameTheRecordThatFails)
+{
+  const fs::path dir = fresh_dir("messages");
+  fs::create_directories(dir);
+  // a stroke there and back: every point is on the surface, the curve cancels out
+  std::ofstream(dir / "back.obj") << "v 0.5 1.5 0\nv 2.5 1.5 0\nl 1 2 1\n";
+  Tool_run r = run(grid + " --polylines '" + (dir / "back.obj").string() + "'");
+  EXPECT_TRUE(r.status == 0 || r.status == 2) << r.err;
+  if(r.status == 2)
+  {
+    EXPECT_NE(r.err.find("back.obj:3: no curve left on the surface: what was put on it cancels out"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("too far"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("farther"), std::string::npos) << r.err;
+  }
+  // an OBJ mesh whose `l` record leaves the faces (points above the grid, on no face): a hint at --polylines
+  std::ofstream obj(dir / "mesh_and_stroke.obj");
+  for(int j = 0; j < 4; ++j)
+    for(int i = 0; i < 4; ++i) obj << "v " << i << " " << j << " 0\n";
+  for(int j = 0; j < 3; ++j)
+    for(int i = 0; i < 3; ++i)
+    {
+      const int a = 4 * j + i + 1;
+      obj << "f " << a << " " << a + 1 << " " << a + 5 << "\nf " << a << " " << a + 5 << " " << a + 4 << "\n";
+    }
+  obj << "v 0.2 0.2 0.1\nv 2.7 0.3 0.1\nv 1.5 2.8 0.1\nl 17 18 19 17\n";
+  obj.close();
+  r = run("'" + (dir / "mesh_and_stroke.obj").string() + "'");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("mesh_and_stroke.obj:38: the segment from vertex 16 to vertex 17"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("give it with --polylines FILE"), std::string::npos) << r.err;
+  fs::remove_all(dir);
+}
+
+// an n x n grid of the square [0, size]^2 in z = 0 (normals +z), as an OBJ file
+void write_grid(const fs::path& path, int n, double size)
+{
+  std::ofstream obj(path);
+  obj.precision(17);
+  for(int j = 0; j <= n; ++j)
+    for(int i = 0; i <= n; ++i) obj << "v " << size * i / n << " " << size * j / n << " 0\n";
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i)
+    {
+      const int a = j * (n + 1) + i + 1;
+      obj << "f " << a << " " << a + 1 << " " << a + n + 2 << "\nf " << a << " " << a + n + 2 << " " << a + n + 1 << "\n";
+    }
+}
+
+TEST(ToolCurves, StampOnATinyMeshWorksOrBlamesTheMesh)
+{
+  // the drawing is fine: a stamp onto a mesh of size 1e-100 either gives the labels of the unit-size copy
+  // or is refused with a message about the mesh, never about the SVG
+  const fs::path dir = fresh_dir("tiny_stamp");
+  fs::create_directories(dir);
+  write_grid(dir / "unit.obj", 12, 1);
+  write_grid(dir / "tiny.obj", 12, 1e-100);
+  std::ofstream(dir / "shapes.svg") << "<svg>\n<polyline points=\"10,10 50,50 90,10\"/>\n"
+                                       "<polygon points=\"20 60 40 60 30 80\"/>\n</svg>\n";
+  const std::string svg = " --stamp '" + (dir / "shapes.svg").string() + "' --quiet --output-dir ";
+  const Tool_run unit = run("'" + (dir / "unit.obj").string() + "'" + svg + "'" + (dir / "unit").string() + "'");
+  ASSERT_EQ(unit.status, 0) << unit.err;
+  const Tool_run tiny = run("'" + (dir / "tiny.obj").string() + "'" + svg + "'" + (dir / "tiny").string() + "'");
+  if(tiny.status == 0)
+    EXPECT_EQ(histogram(read_labels(dir / "tiny" / "labels.txt")), histogram(read_labels(dir / "unit" / "labels.txt")));
+  else
+  {
+    EXPECT_EQ(tiny.status, 2);
+    EXPECT_EQ(tiny.err.rfind("swn: error: " + (dir / "tiny.obj").string() + ": ", 0), 0u) << tiny.err;
+    EXPECT_NE(tiny.err.find("scale the mesh"), std::string::npos) << tiny.err;
+    EXPECT_FALSE(fs::exists(dir / "tiny")) << "a failed run writes nothing";
+  }
   fs::remove_all(dir);
 }
 

@@ -61,10 +61,13 @@ static const char* usage =
   "                         `# swn halfedges` (lines `h SRC DST [multiplicity]`)\n"
   "  --polylines FILE       3D polylines (OBJ `v X Y Z` and 1-based `l` records) drawn off the mesh: each\n"
   "                         point is projected onto the surface (farther than the mean edge length: a gap),\n"
-  "                         consecutive points are joined by a straight walk through faces\n"
+  "                         consecutive points are joined by a straight walk through faces; the counts\n"
+  "                         (points off the surface, failed walks, vertices cut in) are printed and in\n"
+  "                         summary.json, a polyline that loses points is a warning with its line\n"
   "  --stamp FILE.svg       a 2D drawing (SVG path with M/L/H/V/Z, polyline, polygon, line) stamped onto the\n"
   "                         mesh along --direction, centred and scaled to 80 % of the mesh's extent\n"
-  "  --direction X,Y,Z      the direction the drawing is stamped along (default 0,0,-1)\n"
+  "  --direction X,Y,Z      the direction the drawing is stamped along (default 0,0,-1): rays land on the\n"
+  "                         front of the faces (the side their normals point to)\n"
   "  --output-dir DIR       write labels.txt, mesh.ply, w.obj, bounding.obj, nonbounding.obj,\n"
   "                         completed.obj and summary.json to DIR (created; written atomically)\n"
   "  --epsilon X            relative cost of residual jumps across the curve (default 0.01)\n"
@@ -153,8 +156,10 @@ Options parse_arguments(int argc, char** argv)
       char c1 = 0, c2 = 0;
       auto& d = o.off_mesh.direction;
       if(!(in >> d[0] >> c1 >> d[1] >> c2 >> d[2]) || c1 != ',' || c2 != ',' || !in.eof() ||
-         !std::isfinite(d[0] + d[1] + d[2]) || d[0] * d[0] + d[1] * d[1] + d[2] * d[2] == 0)
+         !std::isfinite(d[0] + d[1] + d[2]) || (d[0] == 0 && d[1] == 0 && d[2] == 0))
         throw Usage_error("--direction needs three numbers X,Y,Z, not all zero, got '" + v + "'");
+      const double largest = (std::max)({std::abs(d[0]), std::abs(d[1]), std::abs(d[2])});
+      for(double& x : d) x /= largest;   // only the direction counts: 1e300 or 1e-300 components neither overflow nor underflow
     }
     else if(a == "--lp-solver") o.lp_solver = next();
     else if(a == "--linear-solver") o.linear_solver = next();
@@ -264,14 +269,49 @@ void json_method_and_labels(SIO::Json& j, const Options& opt, const SWN::Solve_r
   j.end_array();
 }
 
+// what the library did with the curves off the mesh, one object per file
+void json_off_mesh(SIO::Json& j, const std::vector<SIO::Off_mesh_report>& reports)
+{
+  j.key("curves_off_mesh").begin_array();
+  for(const SIO::Off_mesh_report& r : reports)
+  {
+    j.begin_object().key("file").value(r.file).key("kind").value(std::string(r.stamp ? "stamp" : "polylines"))
+      .key("polylines").value(r.polylines);
+    if(r.stamp) j.key("stamped_polylines").value(r.stamped_polylines);
+    j.key("points").value(r.points).key("points_off_surface").value(r.points_off_surface)
+      .key("failed_walks").value(r.failed_walks).key("dropped_crossings").value(r.dropped_crossings)
+      .key("curves").value(r.curves).key("cut_vertices").value(r.cut_vertices).key("cut_faces").value(r.cut_faces)
+      .key("refined_pieces").value(r.refined_pieces).key("refinement_vertices").value(r.refinement_vertices)
+      .key("refinement_faces").value(r.refinement_faces).end_object();
+  }
+  j.end_array();
+}
+
+// the curves of an OBJ mesh's `l` records; a record that leaves the faces gets a hint at --polylines
+SIO::Curve_set obj_mesh_curves(const SIO::Mesh_read_info& info, const Mesh& mesh)
+{
+  try
+  {
+    return SIO::curve_set_from_obj(info, mesh);
+  }
+  catch(const SIO::Input_error& e)
+  {
+    if(e.reason.find("share no face") == std::string::npos) throw;
+    throw SIO::Input_error(e.file, e.line, e.reason + "; the `l` records of a mesh file run along its edges: for a stroke "
+                           "drawn off the mesh, put its `v` and `l` records in a file of their own and give it with --polylines FILE");
+  }
+}
+
 void print_summary(const Options& opt, const SIO::Mesh_read_info& info, const SWN::Solve_report& report,
-                   const Histogram& histogram, std::size_t G_edges, std::size_t bounding_edges, double seconds)
+                   const std::vector<SIO::Off_mesh_report>& off_mesh, const Histogram& histogram,
+                   std::size_t G_edges, std::size_t bounding_edges, double seconds)
 {
   if(opt.quiet) return;
   std::cout << "mesh: " << opt.mesh << ": " << info.number_of_vertices << " vertices, " << info.number_of_faces
             << " faces; solved on " << report.vertices << " vertices, " << report.faces << " faces, genus "
-            << report.genus << ", " << report.components << " component(s)\n"
-            << "curve: " << report.curve_edges << " edges, " << report.interior_endpoints << " interior endpoints\n"
+            << report.genus << ", " << report.components << " component(s)\n";
+  for(const SIO::Off_mesh_report& r : off_mesh) std::cout << SIO::summary_line(r) << "\n";
+  std::cout << "curve: " << report.curve_edges << " edges, " << report.interior_endpoints << " interior endpoints\n"
             << "labels:";
   for(const auto& h : histogram) std::cout << "  W=" << h.first << ": " << h.second.first << " faces";
   std::cout << "\nnonbounding loops G: " << G_edges << " edges; bounding chain: " << bounding_edges << " edges\n"
@@ -306,6 +346,7 @@ int main(int argc, char** argv)
   SIO::Mesh_read_info info;
   std::vector<SIO::Curve_set> curves;
   SIO::Cut_result<K::Point_3> cut;
+  std::vector<SIO::Off_mesh_report> off_mesh;
   double t_read = 0, t_cut = 0;
   std::string not_a_mesh;   // why the input is solved as a polygon soup ("" for oriented 2-manifold triangle meshes)
   try
@@ -316,7 +357,7 @@ int main(int argc, char** argv)
       if(!opt.quiet) std::cerr << "swn: warning: " << w << "\n";
     if(not_a_mesh.empty())
     {
-      if(SIO::has_curve_records(info)) curves.push_back(SIO::curve_set_from_obj(info, input));
+      if(SIO::has_curve_records(info)) curves.push_back(obj_mesh_curves(info, input));
       if(!opt.curve.empty()) curves.push_back(SIO::read_curve_file(opt.curve, input));
     }
     else
@@ -347,9 +388,16 @@ int main(int argc, char** argv)
     t0 = std::chrono::steady_clock::now();
     cut = SIO::conforming_cut(input, curves);
     if(!opt.off_mesh.empty())
-      SIO::add_off_mesh_curves(cut, opt.off_mesh, [&](const std::string& w) {
+    {
+      off_mesh = SIO::add_off_mesh_curves(cut, opt.off_mesh, opt.mesh, [&](const std::string& w) {
         if(!opt.quiet) std::cerr << "swn: warning: " << w << "\n";
       });
+      for(const SIO::Off_mesh_report& r : off_mesh)
+      {
+        log(SIO::summary_line(r));
+        for(const std::string& d : r.details) log(d);
+      }
+    }
     input = Mesh();   // the run goes on with the cut's copy: free the input's memory now
     curves.clear();
     t_cut = seconds_since(t0);
@@ -456,6 +504,7 @@ int main(int argc, char** argv)
         .key("nonbounding_edges").value(G_edges).key("bounding_edges").value(bounding_edges)
         .key("nonbounding_closing_units").value(report.nonbounding_closing_units)
         .end_object();
+      json_off_mesh(j, off_mesh);
       json_method_and_labels(j, opt, report, histogram);
       j.key("timings_seconds").begin_object()
         .key("read").value(t_read).key("curve_on_edges").value(t_cut).key("mesh_tables").value(report.time_mesh)
@@ -476,6 +525,6 @@ int main(int argc, char** argv)
     }
   }
 
-  print_summary(opt, info, report, histogram, G_edges, bounding_edges, seconds_since(t_start));
+  print_summary(opt, info, report, off_mesh, histogram, G_edges, bounding_edges, seconds_since(t_start));
   return 0;
 }

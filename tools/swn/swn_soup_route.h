@@ -139,7 +139,7 @@ int run_on_soup(const Options& opt, const SIO::Triangle_soup& soup, const SIO::M
       return 1;
     }
   }
-  print_summary(opt, info, report, histogram, G_edges, bounding_edges, seconds_since(t_start));
+  print_summary(opt, info, report, {}, histogram, G_edges, bounding_edges, seconds_since(t_start));
   return 0;
 }
 

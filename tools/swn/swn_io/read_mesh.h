@@ -123,7 +123,7 @@ Mesh_read_info read_mesh(const std::string& filename, CGAL::Surface_mesh<Point>&
 
 
 /*!
-  \brief reads a mesh file (as `read_mesh()`) into `mesh` when it is an oriented 2-manifold triangle mesh, and
+  \brief reads a mesh from a stream in the format `fmt` (as `read_mesh()`) into `mesh` when it is an oriented 2-manifold triangle mesh, and
   otherwise keeps it as a soup: polygons with more than three vertices, edges shared by more than two faces,
   vertices where several fans meet, faces traversing an edge the same way.
 
@@ -136,13 +136,9 @@ Mesh_read_info read_mesh(const std::string& filename, CGAL::Surface_mesh<Point>&
   triangle)
 */
 template <class Point>
-std::string read_mesh_or_soup(const std::string& filename, CGAL::Surface_mesh<Point>& mesh, Triangle_soup& soup,
-                              Mesh_read_info& info)
+std::string read_mesh_or_soup(std::istream& is, const std::string& fmt, const std::string& filename,
+                              CGAL::Surface_mesh<Point>& mesh, Triangle_soup& soup, Mesh_read_info& info)
 {
-  std::ifstream is = internal::open_input_file(filename, "a mesh file");
-  const std::string fmt = mesh_file_format(filename);
-  if(fmt != "obj" && fmt != "off" && fmt != "ply" && fmt != "stl")
-    throw Input_error(filename, 0, "unknown mesh file extension " + internal::quote(fmt) + " (use .obj, .off, .ply or .stl)");
   info = Mesh_read_info();
   soup = Triangle_soup();
   mesh.clear();
@@ -158,6 +154,18 @@ std::string read_mesh_or_soup(const std::string& filename, CGAL::Surface_mesh<Po
     return line > 0 ? filename + ":" + std::to_string(line) + ": " + problem : problem;
   build_oriented_mesh(soup, twin, mesh);
   return problem;
+}
+
+/// `read_mesh_or_soup()` on the file `filename`, in the format its extension names
+template <class Point>
+std::string read_mesh_or_soup(const std::string& filename, CGAL::Surface_mesh<Point>& mesh, Triangle_soup& soup,
+                              Mesh_read_info& info)
+{
+  std::ifstream is = internal::open_input_file(filename, "a mesh file");
+  const std::string fmt = mesh_file_format(filename);
+  if(fmt != "obj" && fmt != "off" && fmt != "ply" && fmt != "stl")
+    throw Input_error(filename, 0, "unknown mesh file extension " + internal::quote(fmt) + " (use .obj, .off, .ply or .stl)");
+  return read_mesh_or_soup(is, fmt, filename, mesh, soup, info);
 }
 
 } // namespace IO

@@ -9,6 +9,7 @@
 
 #include "swn_io/errors.h"
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <cmath>
@@ -24,22 +25,32 @@ namespace Surface_winding_numbers {
 namespace IO {
 
 /*!
-  \brief reads 3D polylines from an OBJ file: `v X Y Z` points and `l I J ...` polylines through them
+  \brief 3D polylines read from an OBJ file, with the line of each `l` record.
+*/
+struct Obj_polylines
+{
+  /// the polylines; a closed one repeats its first point at the end
+  std::vector<std::vector<std::array<double, 3> > > polylines;
+  /// for each polyline, the 1-based line of its `l` record
+  std::vector<std::size_t> lines;
+};
+
+/*!
+  \brief reads 3D polylines from an OBJ stream: `v X Y Z` points and `l I J ...` polylines through them
   (1-based indices, negative ones counted back from the last point, `#offset K` honoured as in the curve
   files). Other records (`f`, `vn`, `vt`, `o`, `g`, ...) are ignored. A polyline whose last index repeats
-  its first is closed.
+  its first is closed. `file` names the stream in messages.
   \throws Input_error (file and line) on an unparsable or non-finite coordinate, an index out of range, and
   when the file holds no `l` record.
 */
-inline std::vector<std::vector<std::array<double, 3> > > read_obj_polylines(const std::string& file)
+inline Obj_polylines read_obj_polylines(std::istream& is, const std::string& file)
 {
-  std::ifstream is = internal::open_input_file(file, "an OBJ polyline file");
   internal::Line_reader lr(is, file);
   std::string line;
   std::vector<std::string_view> tok;
   long long offset = 0;
   std::vector<std::array<double, 3> > points;
-  std::vector<std::pair<std::vector<long long>, std::size_t> > lines;   // raw indices, line
+  Obj_polylines result;
   while(internal::next_record(lr, line, tok, offset))
   {
     if(tok[0] == "v")
@@ -51,30 +62,33 @@ inline std::vector<std::vector<std::array<double, 3> > > read_obj_polylines(cons
     }
     else if(tok[0] == "l")
     {
-      std::vector<long long> ids;
+      std::vector<std::array<double, 3> > polyline;
       for(std::size_t k = 1; k < tok.size(); ++k)
       {
         long long i;
         // `l` entries may carry a texture index: `l 3/7 4/8`
         if(!internal::parse_int(tok[k].substr(0, tok[k].find('/')), i))
           lr.fail("cannot parse index " + internal::quote(tok[k]) + " in an `l` record");
-        i = i < 0 ? (long long)points.size() + i : i - 1 + offset;
+        if(i >= 0 && !internal::add_index_offset(i - 1, offset, i)) i = -1;
+        else if(i < 0) i = (long long)points.size() + i;
         if(i < 0 || i >= (long long)points.size())
           lr.fail("index " + internal::quote(tok[k]) + " does not name a point defined above (" +
                   std::to_string(points.size()) + " points)");
-        ids.push_back(i);
+        polyline.push_back(points[std::size_t(i)]);
       }
-      lines.emplace_back(std::move(ids), lr.line_number());
+      result.polylines.push_back(std::move(polyline));
+      result.lines.push_back(lr.line_number());
     }
   }
-  if(lines.empty()) throw Input_error(file, 0, "no polyline (`l` record) in the file");
-  std::vector<std::vector<std::array<double, 3> > > polylines;
-  for(const auto& l : lines)
-  {
-    polylines.emplace_back();
-    for(long long i : l.first) polylines.back().push_back(points[std::size_t(i)]);
-  }
-  return polylines;
+  if(result.lines.empty()) throw Input_error(file, 0, "no polyline (`l` record) in the file");
+  return result;
+}
+
+/// reads the 3D polylines of the OBJ file `file` (see the stream version)
+inline Obj_polylines read_obj_polylines(const std::string& file)
+{
+  std::ifstream is = internal::open_input_file(file, "an OBJ polyline file");
+  return read_obj_polylines(is, file);
 }
 
 /*!
@@ -84,6 +98,8 @@ struct Svg_drawing
 {
   /// the polylines, in the SVG's user units (y down); a closed one repeats its first point at the end
   std::vector<std::vector<std::array<double, 2> > > polylines;
+  /// for each polyline, the 1-based line of the element it comes from
+  std::vector<std::size_t> lines;
   /// `FILE:LINE: element ignored` for every element that is not read
   std::vector<std::string> warnings;
 };
@@ -168,6 +184,8 @@ inline void read_svg_path(std::string_view d, const std::string& file, std::size
       p[0] = in.number() + (relative ? at[0] : 0);
       p[1] = in.number() + (relative ? at[1] : 0);
     }
+    if(!std::isfinite(p[0]) || !std::isfinite(p[1]))
+      in.fail("the path's coordinates add up to a number that is not finite (relative moves overflow)");
     if(c == 'M')
     {
       flush();
@@ -190,12 +208,13 @@ inline void read_svg_path(std::string_view d, const std::string& file, std::size
 
   Containers and metadata (`svg`, `g`, `defs`, `title`, `desc`, `metadata`, `style`) are passed over; any
   other element (`circle`, `rect`, `text`, ...) is ignored with a warning naming it and its line.
+  `file` names the stream in messages.
   \throws Input_error (file and line) on a curved path command (C, S, Q, T, A), a `transform` attribute
-  (not supported: apply the transforms first), a malformed number, or a file without any polyline.
+  (not supported: apply the transforms first), a malformed or infinite number (also a coordinate that
+  overflows when relative moves are added up), or a file without any polyline.
 */
-inline Svg_drawing read_svg_polylines(const std::string& file)
+inline Svg_drawing read_svg_polylines(std::istream& is, const std::string& file)
 {
-  std::ifstream is = internal::open_input_file(file, "an SVG file");
   std::stringstream buffer;
   buffer << is.rdbuf();
   const std::string text = buffer.str();
@@ -242,6 +261,7 @@ inline Svg_drawing read_svg_polylines(const std::string& file)
       attributes.emplace_back(key, text.substr(k + 1, close - k - 1));
       j = close + 1;
     }
+    advance_to(j);   // past the attributes: a '>' inside a quoted value does not end the element
     skip_past(">");
     auto attribute = [&](const std::string& key) -> const std::string* {
       for(const auto& a : attributes)
@@ -255,6 +275,7 @@ inline Svg_drawing read_svg_polylines(const std::string& file)
       const std::string* d = attribute("d");
       if(!d) throw Input_error(file, element_line, "<path> without a 'd' attribute");
       internal::read_svg_path(*d, file, element_line, drawing.polylines);
+      drawing.lines.resize(drawing.polylines.size(), element_line);
     }
     else if(name == "polyline" || name == "polygon")
     {
@@ -269,7 +290,7 @@ inline Svg_drawing read_svg_polylines(const std::string& file)
         p.push_back({x, in.number()});
       }
       if(name == "polygon" && p.size() > 2) p.push_back(p.front());
-      if(p.size() > 1) drawing.polylines.push_back(p);
+      if(p.size() > 1) { drawing.polylines.push_back(p); drawing.lines.push_back(element_line); }
     }
     else if(name == "line")
     {
@@ -278,6 +299,7 @@ inline Svg_drawing read_svg_polylines(const std::string& file)
       for(int k = 0; k < 4; ++k)
         if(const std::string* v = attribute(keys[k])) c[k] = internal::Svg_numbers(*v, file, element_line).number();
       drawing.polylines.push_back({{c[0], c[1]}, {c[2], c[3]}});
+      drawing.lines.push_back(element_line);
     }
     else if(name != "svg" && name != "g" && name != "defs" && name != "title" && name != "desc" &&
             name != "metadata" && name != "style")
@@ -285,7 +307,25 @@ inline Svg_drawing read_svg_polylines(const std::string& file)
                                                      "(only path, polyline, polygon and line)"));
   }
   if(drawing.polylines.empty()) throw Input_error(file, 0, "no polyline in the SVG file (path, polyline, polygon or line)");
+  // the drawing's extent must be finite, for the stamp to scale it (coordinates near +-1e308 overflow)
+  std::array<double, 2> lo = drawing.polylines[0][0], hi = lo;
+  for(std::size_t k = 0; k < drawing.polylines.size(); ++k)
+    for(const auto& q : drawing.polylines[k])
+      for(int c = 0; c < 2; ++c)
+      {
+        lo[c] = (std::min)(lo[c], q[c]);
+        hi[c] = (std::max)(hi[c], q[c]);
+        if(!std::isfinite(hi[c] - lo[c]))
+          throw Input_error(file, drawing.lines[k], "the drawing's extent is not a finite number (coordinates too large)");
+      }
   return drawing;
+}
+
+/// reads the drawing of the SVG file `file` (see the stream version)
+inline Svg_drawing read_svg_polylines(const std::string& file)
+{
+  std::ifstream is = internal::open_input_file(file, "an SVG file");
+  return read_svg_polylines(is, file);
 }
 
 } // namespace IO
