@@ -21,6 +21,7 @@
 #include "swn_io/atomic_output_dir.h"
 #include "swn_io/conforming_cut.h"
 #include "swn_io/curves_off_mesh.h"
+#include "swn_io/input_faces.h"
 #include "swn_io/json.h"
 #include "swn_io/read_curves.h"
 #include "swn_io/read_mesh.h"
@@ -79,6 +80,14 @@ static const char* usage =
   "                         closed by shortest paths, one shift per region (faster, approximate)\n"
   "  --no-nonbounding-filter  label by rounding the jump-harmonic function u itself (paper Fig. 27): loops\n"
   "                         around handles are completed by contours of u instead of being filtered out\n"
+  "  --anchor-face N        face N of the mesh file (1-based, the file's face order: line N of a per-face\n"
+  "                         labels.txt) gets label 0 in its connected component (default: the label covering\n"
+  "                         the largest area); after a cut, the largest of its pieces\n"
+  "  --labels-per-input-face  labels.txt gets one line per face of the mesh file (the label covering the\n"
+  "                         largest area of its pieces) instead of one per face of the cut mesh\n"
+  "  --confidence           mesh.ply gets per-face `confidence` (the flip cost of the face's region) and\n"
+  "                         `region`, summary.json every region with its flip cost (default: the\n"
+  "                         second-best flip only)\n"
   "  --sequential           use one thread: factorize the Hodge projection's matrix after the first\n"
   "                         solve and write w.obj after the other files (default: both on a second\n"
   "                         thread, during the first solve and while the other files are written)\n"
@@ -89,8 +98,8 @@ static const char* usage =
   "  --help                 this text\n"
   "\n"
   "Labels W are integers per face; in every connected component the label covering the largest area\n"
-  "is 0. Curves crossing an edge from right to left raise W by one: the inside of a counter-clockwise\n"
-  "loop (seen from the side the faces are oriented towards) is +1.\n"
+  "is 0 (or the label of the --anchor-face). Curves crossing an edge from right to left raise W by one:\n"
+  "the inside of a counter-clockwise loop (seen from the side the faces are oriented towards) is +1.\n"
   "\n"
   "examples:\n"
   "  swn data/swn-demo/torus.obj --curve data/swn-demo/torus-phi.txt --output-dir out/torus\n"
@@ -128,6 +137,9 @@ struct Options
   double epsilon = 0.01;
   bool quiet = false, verbose = false, help = false, reduced_residual = false, sequential = false;
   bool unfiltered = false;   // --no-nonbounding-filter
+  std::size_t anchor_face = 0;   // --anchor-face: 1-based face of the mesh file, 0: none
+  bool labels_per_input_face = false;   // --labels-per-input-face
+  bool confidence = false;   // --confidence
 };
 
 Options parse_arguments(int argc, char** argv)
@@ -168,6 +180,17 @@ Options parse_arguments(int argc, char** argv)
     else if(a == "--reduced-residual") o.reduced_residual = true;
     else if(a == "--no-nonbounding-filter") o.unfiltered = true;
     else if(a == "--sequential") o.sequential = true;
+    else if(a == "--labels-per-input-face") o.labels_per_input_face = true;
+    else if(a == "--confidence") o.confidence = true;
+    else if(a == "--anchor-face")
+    {
+      const std::string v = next();
+      char* end = nullptr;
+      const long long n = std::strtoll(v.c_str(), &end, 10);
+      if(v.empty() || *end != '\0' || n < 1)
+        throw Usage_error("--anchor-face needs a face number (1-based, in the mesh file's order), got '" + v + "'");
+      o.anchor_face = std::size_t(n);
+    }
     else if(a == "--epsilon")
     {
       const std::string v = next();
@@ -322,6 +345,7 @@ void print_summary(const Options& opt, const SIO::Mesh_read_info& info, const SW
 
 } // namespace
 
+#include "swn_label_outputs.h"
 #include "swn_soup_route.h"
 
 int main(int argc, char** argv)
@@ -353,6 +377,9 @@ int main(int argc, char** argv)
   {
     auto t0 = std::chrono::steady_clock::now();
     not_a_mesh = SIO::read_mesh_or_soup(opt.mesh, input, soup, info);
+    if(opt.anchor_face > info.number_of_faces)
+      throw SIO::Input_error(opt.mesh, 0, "--anchor-face " + std::to_string(opt.anchor_face) + " is out of range (the mesh has " +
+                                            std::to_string(info.number_of_faces) + " faces, numbered from 1)");
     for(const std::string& w : info.warnings)
       if(!opt.quiet) std::cerr << "swn: warning: " << w << "\n";
     if(not_a_mesh.empty())
@@ -427,17 +454,24 @@ int main(int argc, char** argv)
   auto G = mesh.add_property_map<Mesh::Edge_index, int>("e:G", 0).first;
   auto g = mesh.add_property_map<Mesh::Edge_index, double>("e:g", 0.).first;
   auto B = mesh.add_property_map<Mesh::Edge_index, int>("e:bounding", 0).first;
+  auto confidence = mesh.add_property_map<Mesh::Face_index, double>("f:confidence", 0.).first;
+  auto region = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:region", 0).first;
+  SWN::Label_confidence regions;
   SWN::Solve_report report;
+  const Mesh::Face_index anchor = anchor_piece(opt, mesh, cut.face_origin);
   const bool ok = with_solvers(opt, [&](auto& lp, auto sparse_solver) {
     return CGAL::surface_winding_numbers(
       mesh, chain, labels,
+      SWN::parameters::label_anchor_face(anchor,
+      SWN::parameters::label_confidence(std::ref(regions), SWN::parameters::confidence_map(confidence,
+      SWN::parameters::region_map(region,
       SWN::parameters::winding_number_map(w, SWN::parameters::nonbounding_chain_map(G,
       SWN::parameters::nonbounding_chain_real_map(g, SWN::parameters::bounding_chain_map(B,
       SWN::parameters::epsilon(opt.epsilon, SWN::parameters::use_reduced_residual(opt.reduced_residual,
       SWN::parameters::filter_nonbounding_loops(!opt.unfiltered,
       SWN::parameters::concurrency(!opt.sequential,
       SWN::parameters::lp_solver(std::ref(lp),
-      SWN::parameters::report(std::ref(report)))))))))))
+      SWN::parameters::report(std::ref(report)))))))))))))))
         .verbose(opt.verbose).sparse_linear_solver(sparse_solver));
   });
   if(!ok)
@@ -451,15 +485,20 @@ int main(int argc, char** argv)
   Histogram histogram;
   for(auto f : faces(mesh))
   {
-    auto h = halfedge(f, mesh);
-    const K::Point_3 &p = mesh.point(source(h, mesh)), &q = mesh.point(target(h, mesh)),
-                     &r = mesh.point(target(next(h, mesh), mesh));
     auto& entry = histogram[labels[f]];
     ++entry.first;
-    entry.second += std::sqrt(CGAL::to_double(CGAL::squared_area(p, q, r)));
+    entry.second += SIO::face_area(mesh, f);
   }
   std::size_t G_edges = 0, bounding_edges = 0;
   for(auto e : edges(mesh)) { G_edges += G[e] != 0; bounding_edges += B[e] != 0; }
+  // the cut (and the refinement) split faces: outputs are on the solved mesh, labels.txt too unless asked
+  const bool faces_changed = num_faces(mesh) != cut.input_faces;
+  if(faces_changed && !opt.quiet)
+    std::cout << "note: the curves were put on edges by splitting faces: " << cut.input_faces << " input faces, "
+              << num_faces(mesh) << " solved faces; " << (opt.labels_per_input_face
+                    ? "labels.txt has one label per input face (the label covering the largest area of its pieces)"
+                    : "labels.txt and mesh.ply are on the solved faces (--labels-per-input-face: labels.txt per input face)")
+              << "\n";
 
   double t_write = 0;
   if(!opt.output_dir.empty())
@@ -475,8 +514,15 @@ int main(int argc, char** argv)
       // future waits for the other thread before `out` removes the temporary files.
       const std::string w_obj_path = out.path("w.obj");
       std::future<void> w_obj = start_task(opt.sequential, [&] { SIO::write_w_obj(w_obj_path, mesh, w); });
-      SIO::write_labels(out.path("labels.txt"), mesh, labels);
-      SIO::write_labeled_ply(out.path("mesh.ply"), mesh, labels, w);
+      if(opt.labels_per_input_face)
+        SIO::write_soup_labels(out.path("labels.txt"), SIO::labels_per_input_face(mesh, labels, cut.face_origin, cut.input_faces));
+      else
+        SIO::write_labels(out.path("labels.txt"), mesh, labels);
+      std::vector<double> face_confidence;
+      std::vector<std::size_t> face_region;
+      if(opt.confidence)
+        for(auto f : faces(mesh)) { face_confidence.push_back(confidence[f]); face_region.push_back(region[f]); }
+      SIO::write_labeled_ply(out.path("mesh.ply"), mesh, labels, w, true, face_confidence, face_region);
       SIO::write_chain_obj(out.path("bounding.obj"), mesh, B);
       SIO::write_chain_obj(out.path("nonbounding.obj"), mesh, G);
       SIO::write_chain_obj(out.path("completed.obj"), mesh, completed);
@@ -497,6 +543,7 @@ int main(int argc, char** argv)
         .key("components").value(report.components).key("genus").value(std::size_t(report.genus))
         .key("border_edges").value(report.border_edges).key("border_loops").value(report.border_loops)
         .key("cut_new_vertices").value(cut.cut_new_vertices).key("refine_new_vertices").value(cut.refine_new_vertices)
+        .key("faces_changed").value(faces_changed)
         .key("clamped_cotan_weights").value(report.degenerate_weights)
         .end_object();
       j.key("curve").begin_object()
@@ -506,6 +553,8 @@ int main(int argc, char** argv)
         .end_object();
       json_off_mesh(j, off_mesh);
       json_method_and_labels(j, opt, report, histogram);
+      j.key("labels_txt").value(std::string(opt.labels_per_input_face || !faces_changed ? "per input face" : "per solved face"));
+      json_confidence(j, opt, regions);
       j.key("timings_seconds").begin_object()
         .key("read").value(t_read).key("curve_on_edges").value(t_cut).key("mesh_tables").value(report.time_mesh)
         .key("jump_laplace").value(report.time_setup + report.time_jump_laplace)

@@ -45,7 +45,8 @@ int run_on_soup(const Options& opt, const SIO::Triangle_soup& soup, const SIO::M
         SWN::parameters::filter_nonbounding_loops(!opt.unfiltered,
         SWN::parameters::concurrency(!opt.sequential,
         SWN::parameters::lp_solver(std::ref(lp),
-        SWN::parameters::report(std::ref(report))))))))))))
+        SWN::parameters::label_anchor_face(opt.anchor_face - 1,
+        SWN::parameters::report(std::ref(report)))))))))))))
           .verbose(opt.verbose).sparse_linear_solver(sparse_solver));
     });
   };
@@ -121,6 +122,7 @@ int run_on_soup(const Options& opt, const SIO::Triangle_soup& soup, const SIO::M
         .key("nonbounding_closing_units").value(report.nonbounding_closing_units)
         .end_object();
       json_method_and_labels(j, opt, report, histogram);
+      j.key("labels_txt").value(std::string("per input face"));   // no cut on this route
       j.key("timings_seconds").begin_object()
         .key("read").value(t_read).key("mesh_tables").value(report.time_mesh)
         .key("jump_laplace").value(report.time_setup + report.time_jump_laplace)

@@ -51,6 +51,8 @@ struct Cut_result
   CGAL::Surface_mesh<Point> mesh;
   /// per edge index of `mesh`: the integer chain, signed w.r.t. `halfedge(e, mesh)`
   std::vector<int> chain;
+  /// per face index of `mesh`: the index of the input face it is a piece of (faces not cut: themselves)
+  std::vector<std::size_t> face_origin;
   /// for every point of the curve set(s) (in order, sets concatenated), its vertex in `mesh`, or -1 if the
   /// point is on no segment (or on degenerate ones only)
   std::vector<std::size_t> point_vertex;
@@ -186,9 +188,11 @@ Cut_result<Point> conforming_cut(const CGAL::Surface_mesh<Point>& mesh, const st
   result.input_faces = nf;
   result.mesh = mesh;
   auto chain = result.mesh.template add_property_map<typename Mesh::Edge_index, int>("e:swn_cut_chain", 0).first;
+  auto origin = result.mesh.template add_property_map<typename Mesh::Face_index, typename Mesh::Face_index>("f:swn_cut_origin").first;
   const auto cut = CGAL::Surface_winding_numbers::conforming_cut(
     result.mesh, segments, chain,
-    parameters::refine_short_pieces(options.refine_short_pieces, parameters::minimum_piece_edges(options.min_piece_edges)));
+    parameters::refine_short_pieces(options.refine_short_pieces, parameters::minimum_piece_edges(options.min_piece_edges,
+    parameters::face_origin_map(origin))));
   if(!cut)
   {
     const auto& [file, line] = where[cut.curve];
@@ -204,6 +208,9 @@ Cut_result<Point> conforming_cut(const CGAL::Surface_mesh<Point>& mesh, const st
   result.chain.assign(result.mesh.number_of_edges(), 0);
   for(auto e : result.mesh.edges()) result.chain[std::size_t(e)] = chain[e];
   result.mesh.remove_property_map(chain);
+  result.face_origin.assign(result.mesh.number_of_faces(), 0);
+  for(auto f : result.mesh.faces()) result.face_origin[std::size_t(f)] = std::size_t(origin[f]);
+  result.mesh.remove_property_map(origin);
   result.point_vertex.assign(base, std::size_t(-1));
   for(std::size_t k = 0; k < segments.size(); ++k)
     for(int end = 0; end < 2; ++end)

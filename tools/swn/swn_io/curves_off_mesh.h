@@ -157,10 +157,16 @@ std::vector<Off_mesh_report> add_off_mesh_curves(Cut_result<Point>& cut, const O
   for(auto e : mesh.edges()) chain[e] = cut.chain[std::size_t(e)];
   std::vector<Off_mesh_report> reports;
   std::size_t first_line_on_surface = 0;   // the line of the first polyline put on the surface
+  // the input face of every face: the face it is a piece of (polylines_to_chain()), and that one's
+  auto origin = mesh.template add_property_map<typename Mesh::Face_index, typename Mesh::Face_index>("f:swn_off_mesh_origin").first;
   auto put_on_mesh = [&](const std::vector<std::vector<Point> >& polylines, Off_mesh_report& report,
                          const std::vector<std::size_t>& lines) {
-    const auto r = polylines_to_chain(mesh, polylines, chain);
+    for(auto f : mesh.faces()) origin[f] = f;
+    const auto r = polylines_to_chain(mesh, polylines, chain, parameters::face_origin_map(origin));
     if(!r) throw Input_error(report.file, 0, r.error);
+    std::vector<std::size_t> composed(mesh.number_of_faces());
+    for(auto f : mesh.faces()) composed[std::size_t(f)] = cut.face_origin[std::size_t(origin[f])];
+    cut.face_origin.swap(composed);
     for(const std::string& w : r.warnings) warn(internal::locate_polyline_warning(w, report.file, lines));
     for(std::size_t k = 0; k < r.pieces.size() && k < lines.size() && first_line_on_surface == 0; ++k)
       if(!r.pieces[k].empty()) first_line_on_surface = lines[k];
@@ -250,6 +256,7 @@ std::vector<Off_mesh_report> add_off_mesh_curves(Cut_result<Point>& cut, const O
   cut.chain.assign(mesh.number_of_edges(), 0);
   for(auto e : mesh.edges()) cut.chain[std::size_t(e)] = chain[e];
   mesh.remove_property_map(chain);
+  mesh.remove_property_map(origin);
   return reports;
 }
 

@@ -253,10 +253,15 @@ inline std::array<unsigned char, 3> label_color(int label)
   \param binary `binary_little_endian` if true (the default: compact, exact NaN), ASCII otherwise (17
   significant digits); open the stream in binary mode. In ASCII, NaN is written as `nan`, which some readers
   (e.g. CGAL's) reject.
+  \param confidence per face index (may be empty: not written): the per-face properties `float confidence`
+  (the flip cost of the face's region, `inf` where no flip is feasible) and `int region` (its region)
+  \param region per face index, the region (written with `confidence`)
 */
 template <class Point, class LabelMap, class WindingMap>
 void write_labeled_ply(std::ostream& os, const CGAL::Surface_mesh<Point>& mesh, const LabelMap& label_map,
-                       const WindingMap& winding_map, bool binary = true)
+                       const WindingMap& winding_map, bool binary = true,
+                       const std::vector<double>& confidence = std::vector<double>(),
+                       const std::vector<std::size_t>& region = std::vector<std::size_t>())
 {
   typedef CGAL::Surface_mesh<Point> Mesh;
   typedef typename Mesh::Face_index Face_index;
@@ -268,6 +273,8 @@ void write_labeled_ply(std::ostream& os, const CGAL::Surface_mesh<Point>& mesh, 
     throw std::invalid_argument("write_labeled_ply: one label per face expected");
   if(!winding_numbers.empty() && winding_numbers.size() != nf)
     throw std::invalid_argument("write_labeled_ply: one winding number per face expected");
+  if(!confidence.empty() && (confidence.size() != nf || region.size() != nf))
+    throw std::invalid_argument("write_labeled_ply: one confidence and one region per face expected");
   // write_PLY() writes every property of a Surface_mesh whose type it knows: a copy keeps the connectivity
   // and the points only (CGAL 5.5's assign() does not compile) and gets the face properties, in the
   // order of the header
@@ -282,6 +289,16 @@ void write_labeled_ply(std::ostream& os, const CGAL::Surface_mesh<Point>& mesh, 
   {
     auto w = out.template add_property_map<Face_index, float>("f:winding_number", 0.f).first;
     for(Face_index f : out.faces()) w[f] = static_cast<float>(winding_numbers[std::size_t(f)]);
+  }
+  if(!confidence.empty())
+  {
+    auto c = out.template add_property_map<Face_index, float>("f:confidence", 0.f).first;
+    auto r = out.template add_property_map<Face_index, std::int32_t>("f:region", 0).first;
+    for(Face_index f : out.faces())
+    {
+      c[f] = static_cast<float>(confidence[std::size_t(f)]);
+      r[f] = static_cast<std::int32_t>(region[std::size_t(f)]);
+    }
   }
   if(!labels.empty())
   {
@@ -309,9 +326,13 @@ void write_labeled_ply(std::ostream& os, const CGAL::Surface_mesh<Point>& mesh, 
 */
 template <class Point, class LabelMap, class WindingMap>
 void write_labeled_ply(const std::string& path, const CGAL::Surface_mesh<Point>& mesh, const LabelMap& labels,
-                       const WindingMap& winding, bool binary = true)
+                       const WindingMap& winding, bool binary = true,
+                       const std::vector<double>& confidence = std::vector<double>(),
+                       const std::vector<std::size_t>& region = std::vector<std::size_t>())
 {
-  internal::write_to_path(path, [&](std::ostream& os) { write_labeled_ply(os, mesh, labels, winding, binary); });
+  internal::write_to_path(path, [&](std::ostream& os) {
+    write_labeled_ply(os, mesh, labels, winding, binary, confidence, region);
+  });
 }
 
 /*!
