@@ -7,6 +7,7 @@
 #include "swn_io/errors.h"
 #include "swn_io/read_curves.h"
 #include "swn_io/read_mesh.h"
+#include "swn_io/soup_curves.h"
 
 #include "test_io_support.h"
 
@@ -168,6 +169,57 @@ TEST(HostileInput, ZeroAreaFacesAndExtremeUnits)
     EXPECT_EQ(read_text(sliver(1e-6), "obj").number_of_faces(), 1u) << scale;
     expect_input_error([&] { read_text(sliver(1e-20), "obj"); }, 4, {"face 0 has zero area"});
   }
+}
+
+// Polygon soups (the tool's soup route): every bad record is named with the file and line that hold it
+// (issue 42, item 6; the files are reproducers of messages that had neither), and the faces of a `c`
+// record are numbered as in the file.
+TEST(HostileInput, SoupMessagesNameTheRecordsFileAndLine)
+{
+  const std::string dir = tdata + "soup_messages/";
+  Mesh m;
+  IO::Triangle_soup soup;
+  IO::Mesh_read_info info;
+  // a zero-area triangle among polygons (it was a warning, then the library's message without a line)
+  expect_input_error([&] { IO::read_mesh_or_soup(dir + "zero_area_triangle.obj", m, soup, info); }, 7,
+                     {"face 0 has zero area (degenerate triangle): its vertices 0, 1, 2 are collinear"});
+  // a quad with three collinear corners is refused only if the library's triangulation of it (along the
+  // shorter diagonal) has a flat triangle
+  auto with_apex = [](const std::string& y) { return "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 1 " + y + " 0\nv 1 -1 0\nf 1 2 3 4\nf 1 5 3\n"; };
+  const fs::path quad_file = fs::temp_directory_path() / "swn_soup_quad_area.obj";
+  std::ofstream(quad_file) << with_apex("1");
+  EXPECT_NE(IO::read_mesh_or_soup(quad_file.string(), m, soup, info), "");   // read, as a soup
+  std::ofstream(quad_file) << with_apex("5");
+  expect_input_error([&] { IO::read_mesh_or_soup(quad_file.string(), m, soup, info); }, 6,
+                     {"face 0 has zero area (degenerate polygon)"});
+  fs::remove(quad_file);
+
+  ASSERT_NE(IO::read_mesh_or_soup(dir + "grid10q.obj", m, soup, info), "");
+  // `c 1 50`: faces 1 and 50 of the file (0 and 49 inside) are not adjacent; the curve file is blamed
+  try
+  {
+    IO::read_curve_file(dir + "dual_chain_nonadjacent.txt", soup);
+    ADD_FAILURE() << "no Input_error";
+  }
+  catch(const IO::Input_error& e)
+  {
+    EXPECT_EQ(e.file, dir + "dual_chain_nonadjacent.txt");
+    EXPECT_EQ(e.line, 1u);
+    EXPECT_NE(e.reason.find("the faces 1 and 50 of this dual chain record (numbered as in the file) share no edge"),
+              std::string::npos) << e.what();
+  }
+  // with `#offset 0` the same record names faces 0 and 49
+  const fs::path offset_file = fs::temp_directory_path() / "swn_soup_offset0.txt";
+  std::ofstream(offset_file) << "#offset 0\nc 0 49\n";
+  expect_input_error([&] { IO::read_curve_file(offset_file.string(), soup); }, 2, {"the faces 0 and 49 of this"});
+  fs::remove(offset_file);
+  // the polyline 0 -> 1 runs along the border: refused at its line in the curve file; there and back is not
+  const std::vector<IO::Curve_set> border{IO::read_curve_file(dir + "curve_on_border.txt", soup)};
+  expect_input_error([&] { IO::soup_curve(border, soup); }, 2, {"from vertex 0 to vertex 1, on the border of the mesh"});
+  std::vector<IO::Curve_set> cancelled = border;
+  cancelled.push_back(border[0]);
+  std::swap(cancelled[1].segments[0].a, cancelled[1].segments[0].b);
+  EXPECT_EQ(IO::soup_curve(cancelled, soup).edges.size(), 2u);
 }
 
 // 5. A signal ends the process without the destructor of Atomic_output_dir: the handler installed by

@@ -10,6 +10,7 @@
 #include "test_oracles_soup.h"
 
 #include <cmath>
+#include <algorithm>
 #include <functional>
 #include <map>
 #include <set>
@@ -91,6 +92,18 @@ struct Three_flaps : Tagged_soup
     }
   }
   std::size_t vid(int f, int i, int k) const { return i == 0 ? spine[k] : flap[f][(i - 1) * (N + 1) + k]; }
+  // the rectangle -5 <= x <= 5, 2 <= k <= 7, counter-clockwise in the plane (x, k) of the sheet made of
+  // flaps f (x = i) and g (x = -i), as (flap, i, k) triples
+  std::vector<std::array<int, 3>> rectangle_across_the_spine(int f, int g) const
+  {
+    auto at = [&](int x, int k) { return std::array<int, 3>{x >= 0 ? f : g, std::abs(x), k}; };
+    std::vector<std::array<int, 3>> loop;
+    for(int x = -5; x < 5; ++x) loop.push_back(at(x, 2));
+    for(int k = 2; k < 7; ++k) loop.push_back(at(5, k));
+    for(int x = 5; x > -5; --x) loop.push_back(at(x, 7));
+    for(int k = 7; k >= 2; --k) loop.push_back(at(-5, k));
+    return loop;
+  }
   // the directed edges of a path through (f, i, k) triples
   std::vector<Pair> path(const std::vector<std::array<int, 3>>& at) const
   {
@@ -117,6 +130,11 @@ TEST(Nonmanifold, LoopInsideOneOfThreeFlapsOnASpine)
   EXPECT_EQ(a.report.nonmanifold_edges, 8u);     // the spine
   EXPECT_EQ(a.report.nonmanifold_vertices, 9u);
   EXPECT_EQ(a.report.dropped_curve_edges, 0u);
+  // three disks glued along a segment: chi = 3 - 2 = 1; every flap can be oriented, the genus is not
+  // defined (nonmanifold)
+  EXPECT_EQ(a.report.euler_characteristic, 1);
+  EXPECT_TRUE(a.report.orientable);
+  EXPECT_EQ(a.report.genus, -1);
   auto inside = [&](std::size_t p) {
     const auto& t = s.tag[p];
     return t[0] == 0 && t[1] >= 2 && t[1] < 5 && t[2] >= 2 && t[2] < 6;
@@ -133,13 +151,7 @@ TEST(Nonmanifold, LoopAcrossTheSpineLabelsBothFlapsItEncloses)
   // vertices and are dropped (4 edges); the gaps are closed and both halves of the inside are +1
   // (not +1 on one flap and -1 on the other, as after orienting the soup first).
   Three_flaps s(9, 9);
-  auto at = [](int x, int k) { return std::array<int, 3>{x >= 0 ? 0 : 1, std::abs(x), k}; };
-  std::vector<std::array<int, 3>> loop;
-  for(int x = -5; x < 5; ++x) loop.push_back(at(x, 2));
-  for(int k = 2; k < 7; ++k) loop.push_back(at(5, k));
-  for(int x = 5; x > -5; --x) loop.push_back(at(x, 7));
-  for(int k = 7; k >= 2; --k) loop.push_back(at(-5, k));
-  const Soup_answer a = solve_soup(s.points, s.polygons, s.path(loop));
+  const Soup_answer a = solve_soup(s.points, s.polygons, s.path(s.rectangle_across_the_spine(0, 1)));
   ASSERT_TRUE(a.ok) << a.report.error;
   EXPECT_EQ(a.report.dropped_curve_edges, 4u);
   auto inside = [&](std::size_t p) {
@@ -148,6 +160,42 @@ TEST(Nonmanifold, LoopAcrossTheSpineLabelsBothFlapsItEncloses)
   };
   const std::set<int> in = labels_of(a, inside);
   const std::set<int> out = labels_of(a, [&](std::size_t p) { return s.tag[p][0] < 2 && !inside(p); });
+  ASSERT_EQ(in.size(), 1u);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(*in.begin() - *out.begin(), 1);
+}
+
+TEST(Nonmanifold, LoopAcrossTheSpineBetweenFlapsOrientedAlikeNeedsADualChain)
+{
+  // The same rectangle in the sheet of flaps 0 (x = i) and 2 (x = -i), whose polygons are oriented
+  // alike, i.e. traverse the spine the same way. As directed edges, the higher side of the loop is taken
+  // from each polygon's orientation: the inside on flap 0, the outside on flap 2. The labels then jump
+  // across the spine, where nothing may jump, and the report counts the spine edges where they do. As a
+  // dual chain (jumps into the rectangle on both flaps) the inside is one label higher on both flaps.
+  Three_flaps s(9, 9);
+  auto inside = [&](std::size_t p) {
+    const auto& t = s.tag[p];
+    return t[0] != 1 && t[1] < 5 && t[2] >= 2 && t[2] < 7;
+  };
+  // the label most polygons of one side of one flap carry (near the spine the completion decides)
+  auto label = [&](const Soup_answer& a, int flap, bool in) {
+    std::map<int, int> count;
+    for(std::size_t p = 0; p < s.polygons.size(); ++p)
+      if(s.tag[p][0] == flap && inside(p) == in) ++count[a.W[p]];
+    return std::max_element(count.begin(), count.end(), [](const auto& x, const auto& y) { return x.second < y.second; })->first;
+  };
+  const Soup_answer e = solve_soup(s.points, s.polygons, s.path(s.rectangle_across_the_spine(0, 2)));
+  ASSERT_TRUE(e.ok) << e.report.error;
+  EXPECT_EQ(label(e, 0, true) - label(e, 0, false), 1);
+  EXPECT_EQ(label(e, 2, true) - label(e, 2, false), -1);
+  // at least the spine edges of the rectangle's inside (5) or of its outside (4): one of the two pairs
+  // of sides of the spine differs
+  EXPECT_GE(e.report.nonmanifold_label_jumps, 4u);
+
+  const Soup_answer d = solve_soup(s.points, s.polygons, {}, dual_boundary(s.polygons, inside));
+  ASSERT_TRUE(d.ok) << d.report.error;
+  const std::set<int> in = labels_of(d, inside);
+  const std::set<int> out = labels_of(d, [&](std::size_t p) { return s.tag[p][0] != 1 && !inside(p); });
   ASSERT_EQ(in.size(), 1u);
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(*in.begin() - *out.begin(), 1);
@@ -194,6 +242,9 @@ TEST(Nonmanifold, TwoClosedConesTouchingAtTheirTips)
   ASSERT_TRUE(a.ok) << a.report.error;
   EXPECT_EQ(a.report.nonmanifold_vertices, 1u);   // the tip
   EXPECT_EQ(a.report.nonmanifold_edges, 0u);
+  EXPECT_EQ(a.report.euler_characteristic, 3);   // two spheres sharing a vertex
+  EXPECT_TRUE(a.report.orientable);
+  EXPECT_EQ(a.report.genus, -1);
   const std::set<int> tip_side = labels_of(a, [&](std::size_t p) { return s.tag[p][0] == 1 || s.tag[p][1] < cut; });
   const std::set<int> base_side = labels_of(a, [&](std::size_t p) { return s.tag[p][0] == 0 && s.tag[p][1] >= cut; });
   ASSERT_EQ(tip_side.size(), 1u);
@@ -277,6 +328,10 @@ TEST(Nonorientable, SmallLoopOnAMoebiusStripAsADualChainAndAsEdges)
   const Soup_answer a = solve_soup(s.points, s.polygons, {}, dual_boundary(s.polygons, inside));
   ASSERT_TRUE(a.ok) << a.report.error;
   EXPECT_EQ(a.report.nonorientable_edges, 6u);   // the seam
+  EXPECT_EQ(a.report.euler_characteristic, 0);
+  EXPECT_FALSE(a.report.orientable);
+  EXPECT_EQ(a.report.genus, -1);                  // not defined (the nonorientable genus would be 1)
+  EXPECT_EQ(a.report.border_loops, 1u);
   EXPECT_EQ(a.report.inconsistent_curve_vertices, 0u);
   EXPECT_EQ(labels_of(a, inside), std::set<int>{1});
   EXPECT_EQ(labels_of(a, [&](std::size_t p) { return !inside(p); }), std::set<int>{0});
@@ -364,6 +419,14 @@ TEST(Nonorientable, ReversingSomePolygonsOfAnOrientableSoupChangesNoLabel)
     ASSERT_TRUE(a.ok && b.ok) << a.report.error << b.report.error;
     EXPECT_EQ(a.report.nonorientable_edges, 0u);
     EXPECT_EQ(b.report.nonorientable_edges, 12u);
+    // the same surface: an orientable annulus of genus 0 with two border loops either way
+    for(const Soup_answer* x : {&a, &b})
+    {
+      EXPECT_TRUE(x->report.orientable);
+      EXPECT_EQ(x->report.euler_characteristic, 0);
+      EXPECT_EQ(x->report.genus, 0);
+      EXPECT_EQ(x->report.border_loops, 2u);
+    }
     EXPECT_EQ(a.W, b.W) << "gap at " << gap;
     EXPECT_EQ(a.report.interior_endpoints, b.report.interior_endpoints);
   }

@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <map>
 #include <set>
 
 namespace {
@@ -109,6 +110,9 @@ TEST(ToolSoup, QuadTorusWithAnObjLoopLabelsExactlyTheQuadsItEncloses)
   for(std::size_t f = 0; f < t.f.size(); ++f) EXPECT_EQ(s.ply_faces[f], t.f[f]);
   EXPECT_EQ(count_lines_starting(s.w_obj, "vt "), 4 * t.f.size());
   EXPECT_NE(s.summary.find("\"polygon_soup\""), std::string::npos);
+  for(const char* key : {"\"euler_characteristic\": 0,", "\"orientable\": true,", "\"genus\": 1,"})
+    EXPECT_NE(s.summary.find(key), std::string::npos) << key << " not in " << s.summary;
+  EXPECT_NE(s.r.out.find("Euler characteristic 0, orientable, genus 1"), std::string::npos) << s.r.out;
 }
 
 TEST(ToolSoup, MoebiusStripWithDualChainRecordsAndACenterlineWarning)
@@ -147,6 +151,10 @@ TEST(ToolSoup, MoebiusStripWithDualChainRecordsAndACenterlineWarning)
   ASSERT_EQ(a.labels.size(), s.f.size());
   for(std::size_t f = 0; f < s.f.size(); ++f) EXPECT_EQ(a.labels[f], inside(f) ? 1 : 0) << "face " << f;
   EXPECT_EQ(a.r.err.find("warning"), std::string::npos) << a.r.err;
+  // no genus on a nonorientable surface: the Euler characteristic and orientability instead
+  for(const char* key : {"\"euler_characteristic\": 0,", "\"orientable\": false,", "\"genus\": null,"})
+    EXPECT_NE(a.summary.find(key), std::string::npos) << key << " not in " << a.summary;
+  EXPECT_NE(a.r.out.find("Euler characteristic 0, nonorientable (genus not defined)"), std::string::npos) << a.r.out;
 
   Obj_writer center = s;
   center.extra = "l";
@@ -158,53 +166,98 @@ TEST(ToolSoup, MoebiusStripWithDualChainRecordsAndACenterlineWarning)
   EXPECT_NE(c.summary.find("\"inconsistent_curve_vertices\": 1"), std::string::npos) << c.summary;
 }
 
-TEST(ToolSoup, ThreeFlapsOnASpineDropTheCurveEdgesAtTheSpineWithAWarning)
+namespace {
+
+// three flaps of 6 x 6 quads on a common spine (x = y = 0), flap 1 reversed if `one_sheet` (flaps 0 and 1
+// then form one oriented sheet across the spine), and a `# swn polylines` curve file: the rectangle
+// -2 <= x <= 2, 2 <= k <= 5, counter-clockwise in the (x, k) plane of the sheet of flaps 0 (x = i) and 1
+// (x = -i); tag[f] = (flap, i, k) of face f
+struct Three_flaps_run
 {
-  // three flaps of 6 x 6 quads on a common spine (x = y = 0); a loop across the spine in the sheet of
-  // flaps 0 and 1 (given by a `# swn polylines` curve file) loses its edges at the spine's vertices
-  // (warning, summary), the gaps are closed: W = 1 on the 2 x 3 quads it encloses on either side
   Obj_writer s;
+  std::vector<std::array<int, 3>> tag;
+  Soup_run r;
+};
+
+Three_flaps_run three_flaps_with_a_loop_across_the_spine(bool one_sheet, const std::string& name)
+{
+  Three_flaps_run t;
   const int M = 6, N = 6;
   auto id = [&](int flap, int i, int k) { return i == 0 ? std::size_t(k) : std::size_t((N + 1) + (flap * M + i - 1) * (N + 1) + k); };
-  for(int k = 0; k <= N; ++k) s.v.push_back({0., 0., double(k)});
+  for(int k = 0; k <= N; ++k) t.s.v.push_back({0., 0., double(k)});
   for(int flap = 0; flap < 3; ++flap)
     for(int i = 1; i <= M; ++i)
       for(int k = 0; k <= N; ++k)
-        s.v.push_back({i * std::cos(2 * pi * flap / 3), i * std::sin(2 * pi * flap / 3), double(k)});
-  std::vector<std::array<int, 3>> tag;
+        t.s.v.push_back({i * std::cos(2 * pi * flap / 3), i * std::sin(2 * pi * flap / 3), double(k)});
   for(int flap = 0; flap < 3; ++flap)
     for(int i = 0; i < M; ++i)
       for(int k = 0; k < N; ++k)
       {
         std::vector<std::size_t> q{id(flap, i, k), id(flap, i + 1, k), id(flap, i + 1, k + 1), id(flap, i, k + 1)};
-        if(flap == 1) std::reverse(q.begin(), q.end());   // flaps 0 and 1 oriented as one sheet
-        s.f.push_back(q);
-        tag.push_back({flap, i, k});
+        if(flap == 1 && one_sheet) std::reverse(q.begin(), q.end());
+        t.s.f.push_back(q);
+        t.tag.push_back({flap, i, k});
       }
-  // the rectangle -2 <= x <= 2, 2 <= k <= 5 in the sheet (x = i on flap 0, x = -i on flap 1)
   auto at = [&](int x, int k) { return x >= 0 ? id(0, x, k) : id(1, -x, k); };
   std::string curve = "# swn polylines\n";
   for(int x = -2; x <= 2; ++x) curve += std::to_string(at(x, 2)) + " ";
   for(int k = 3; k <= 5; ++k) curve += std::to_string(at(2, k)) + " ";
   for(int x = 1; x >= -2; --x) curve += std::to_string(at(x, 5)) + " ";
   for(int k = 4; k >= 2; --k) curve += std::to_string(at(-2, k)) + " ";
-  const fs::path curve_file = fresh_dir("flaps_curve.txt");
+  const fs::path curve_file = fresh_dir(name + "_curve.txt");
   std::ofstream(curve_file) << curve << "\n";
-  const Soup_run r = solve("'" + s.write("flaps") + "' --curve '" + curve_file.string() + "'", "flaps");
+  t.r = solve("'" + t.s.write(name) + "' --curve '" + curve_file.string() + "'", name);
   fs::remove(curve_file);
+  return t;
+}
+
+} // namespace
+
+TEST(ToolSoup, ThreeFlapsOnASpineDropTheCurveEdgesAtTheSpineWithAWarning)
+{
+  // the loop across the spine in the sheet of flaps 0 and 1 loses its edges at the spine's vertices
+  // (warning, summary), the gaps are closed: W = 1 on the 2 x 3 quads it encloses on either side
+  const Three_flaps_run t = three_flaps_with_a_loop_across_the_spine(true, "flaps");
+  const Soup_run& r = t.r;
   ASSERT_EQ(r.r.status, 0) << r.r.err;
   EXPECT_NE(r.r.err.find("4 curve edges at nonmanifold vertices were left out"), std::string::npos) << r.r.err;
   EXPECT_NE(r.summary.find("\"dropped_curve_edges\": 4"), std::string::npos) << r.summary;
-  for(std::size_t f = 0; f < s.f.size(); ++f)
+  // three disks on a segment: chi = 1, no genus (nonmanifold), not an unsigned underflow
+  for(const char* key : {"\"euler_characteristic\": 1,", "\"orientable\": true,", "\"genus\": null,"})
+    EXPECT_NE(r.summary.find(key), std::string::npos) << key << " not in " << r.summary;
+  EXPECT_NE(r.r.out.find("Euler characteristic 1, orientable, nonmanifold (genus not defined)"), std::string::npos) << r.r.out;
+  for(std::size_t f = 0; f < t.s.f.size(); ++f)
   {
-    const bool in = tag[f][1] < 2 && tag[f][2] >= 2 && tag[f][2] < 5;
-    if(tag[f][0] < 2)
-      EXPECT_EQ(r.labels[f], in ? 1 : 0) << "flap " << tag[f][0] << " cell " << tag[f][1] << ", " << tag[f][2];
+    const bool in = t.tag[f][1] < 2 && t.tag[f][2] >= 2 && t.tag[f][2] < 5;
+    if(t.tag[f][0] < 2)
+      EXPECT_EQ(r.labels[f], in ? 1 : 0) << "flap " << t.tag[f][0] << " cell " << t.tag[f][1] << ", " << t.tag[f][2];
     // flap 2 may not jump across the spine either: along the enclosed part of the spine it is inside too
     // (where its own completion runs is a tie between paths of equal length, not checked)
-    else if(tag[f][1] == 0 && in)
-      EXPECT_EQ(r.labels[f], 1) << "flap 2 cell 0, " << tag[f][2];
+    else if(t.tag[f][1] == 0 && in)
+      EXPECT_EQ(r.labels[f], 1) << "flap 2 cell 0, " << t.tag[f][2];
   }
+}
+
+TEST(ToolSoup, LoopAcrossTheSpineBetweenFlapsOrientedAlikeSwapsItsSidesWithAWarning)
+{
+  // issue 45, item 5: flaps 0 and 1 oriented alike (not one sheet): the loop's higher side is taken from
+  // each face's orientation, inside on flap 0 and outside on flap 1, so the labels jump across the spine
+  // where nothing may jump; the tool says so
+  const Three_flaps_run t = three_flaps_with_a_loop_across_the_spine(false, "flaps_alike");
+  const Soup_run& r = t.r;
+  ASSERT_EQ(r.r.status, 0) << r.r.err;
+  // every spine edge where inside meets inside or outside meets outside (6 when measured)
+  EXPECT_NE(r.r.err.find("warning: the labels differ across"), std::string::npos) << r.r.err;
+  const std::size_t at = r.summary.find("\"nonmanifold_label_jumps\": ");
+  ASSERT_NE(at, std::string::npos) << r.summary;
+  EXPECT_GE(std::stoi(r.summary.substr(at + 27)), 3) << r.summary;
+  std::map<std::pair<int, bool>, std::set<int>> labels;   // (flap, inside) -> labels
+  for(std::size_t f = 0; f < t.s.f.size(); ++f)
+    if(t.tag[f][0] < 2) labels[{t.tag[f][0], t.tag[f][1] < 2 && t.tag[f][2] >= 2 && t.tag[f][2] < 5}].insert(r.labels[f]);
+  for(const auto& kv : labels) ASSERT_EQ(kv.second.size(), 1u) << "flap " << kv.first.first << (kv.first.second ? " inside" : " outside");
+  auto W = [&](int flap, bool inside) { return *labels[{flap, inside}].begin(); };
+  EXPECT_EQ(W(0, true) - W(0, false), 1);
+  EXPECT_EQ(W(1, true) - W(1, false), -1);
 }
 
 TEST(ToolSoup, EdgePointsOnASoupAreAnErrorWithTheLine)
@@ -219,4 +272,25 @@ TEST(ToolSoup, EdgePointsOnASoupAreAnErrorWithTheLine)
   EXPECT_NE(r.err.find("edge points"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(out));
   fs::remove(curve);
+}
+
+TEST(ToolSoup, BadRecordsAreNamedWithTheFileAndLineThatHoldThem)
+{
+  // issue 42, item 6: a zero-area triangle among polygons, a `c` pair of faces that are not adjacent
+  // (printed as in the file, the curve file blamed, not the mesh), a polyline along the border of a soup
+  const std::string dir = std::string(SWN_TEST_DATA_DIR) + "/soup_messages/";
+  const struct { std::string args, where, what; } cases[] = {
+    {"'" + dir + "zero_area_triangle.obj'", dir + "zero_area_triangle.obj:7: ", "face 0 has zero area"},
+    {"'" + dir + "grid10q.obj' --curve '" + dir + "dual_chain_nonadjacent.txt'", dir + "dual_chain_nonadjacent.txt:1: ",
+     "the faces 1 and 50 of this dual chain record (numbered as in the file) share no edge"},
+    {"'" + dir + "grid10q.obj' --curve '" + dir + "curve_on_border.txt'", dir + "curve_on_border.txt:2: ",
+     "the curve runs along the edge from vertex 0 to vertex 1, on the border of the mesh"}};
+  for(const auto& c : cases)
+  {
+    const fs::path out = fresh_dir("soup_message");
+    const Tool_run r = run(c.args + " --output-dir '" + out.string() + "'");
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_NE(r.err.find("swn: error: " + c.where + c.what), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(out));
+  }
 }

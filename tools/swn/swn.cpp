@@ -273,6 +273,23 @@ bool with_solvers(const Options& opt, Run run)
 
 typedef std::map<int, std::pair<std::size_t, double> > Histogram;   // label -> (faces, area)
 
+// the topology of the solved mesh in summary.json (both routes): the genus only where it is defined
+void json_topology(SIO::Json& j, const SWN::Solve_report& report)
+{
+  j.key("euler_characteristic").value(report.euler_characteristic).key("orientable").value(report.orientable);
+  if(report.genus >= 0) j.key("genus").value(report.genus);
+  else j.key("genus").value(nullptr);
+}
+
+// the same on the console
+std::string topology_text(const SWN::Solve_report& report)
+{
+  std::string s = "Euler characteristic " + std::to_string(report.euler_characteristic) + ", ";
+  if(report.genus >= 0) return s + (report.orientable ? "orientable, genus " : "genus ") + std::to_string(report.genus);
+  return s + (report.orientable ? "orientable" : "nonorientable") +
+         (report.nonmanifold_vertices > 0 ? ", nonmanifold" : "") + " (genus not defined)";
+}
+
 // the parts of summary.json both routes write: the method and the labels
 void json_method_and_labels(SIO::Json& j, const Options& opt, const SWN::Solve_report& report, const Histogram& histogram)
 {
@@ -331,8 +348,8 @@ void print_summary(const Options& opt, const SIO::Mesh_read_info& info, const SW
 {
   if(opt.quiet) return;
   std::cout << "mesh: " << opt.mesh << ": " << info.number_of_vertices << " vertices, " << info.number_of_faces
-            << " faces; solved on " << report.vertices << " vertices, " << report.faces << " faces, genus "
-            << report.genus << ", " << report.components << " component(s)\n";
+            << " faces; solved on " << report.vertices << " vertices, " << report.faces << " faces, "
+            << topology_text(report) << ", " << report.components << " component(s)\n";
   for(const SIO::Off_mesh_report& r : off_mesh) std::cout << SIO::summary_line(r) << "\n";
   std::cout << "curve: " << report.curve_edges << " edges, " << report.interior_endpoints << " interior endpoints\n"
             << "labels:";
@@ -540,8 +557,9 @@ int main(int argc, char** argv)
         .end_object();
       j.key("solved_mesh").begin_object()
         .key("vertices").value(report.vertices).key("edges").value(report.edges).key("faces").value(report.faces)
-        .key("components").value(report.components).key("genus").value(std::size_t(report.genus))
-        .key("border_edges").value(report.border_edges).key("border_loops").value(report.border_loops)
+        .key("components").value(report.components);
+      json_topology(j, report);
+      j.key("border_edges").value(report.border_edges).key("border_loops").value(report.border_loops)
         .key("cut_new_vertices").value(cut.cut_new_vertices).key("refine_new_vertices").value(cut.refine_new_vertices)
         .key("faces_changed").value(faces_changed)
         .key("clamped_cotan_weights").value(report.degenerate_weights)

@@ -22,7 +22,7 @@ int run_on_soup(const Options& opt, const SIO::Triangle_soup& soup, const SIO::M
                 std::chrono::steady_clock::time_point t_start, double t_read)
 {
   if(opt.verbose) std::cerr << "[swn] solved as a polygon soup: " << why << "\n";
-  const SIO::Soup_curve curve = SIO::soup_curve(curves);
+  const SIO::Soup_curve curve = SIO::soup_curve(curves, soup);
   std::vector<K::Point_3> points;
   points.reserve(soup.points.size());
   for(const auto& p : soup.points) points.emplace_back(p[0], p[1], p[2]);
@@ -67,6 +67,12 @@ int run_on_soup(const Options& opt, const SIO::Triangle_soup& soup, const SIO::M
                 << " vertices (on a nonorientable surface the jumps of consecutive curve edges add up instead of "
                 << "cancelling there): it bounds no region consistently (paper Fig. 9); give the curve as a dual chain "
                 << "(c records) with a consistent normal\n";
+    if(report.nonmanifold_label_jumps > 0)
+      std::cerr << "swn: warning: the labels differ across " << report.nonmanifold_label_jumps << " nonmanifold edges, "
+                << "where the method allows no jump: there they depend on which flaps are taken as one sheet (a curve "
+                << "that crosses a spine between two flaps whose faces run along it the same way has its higher side "
+                << "swapped there: give it as a dual chain (c records) or orient the flaps as one sheet; a flap the "
+                << "curve does not cover may also close the region along another path)\n";
   }
 
   Histogram histogram;
@@ -106,8 +112,9 @@ int run_on_soup(const Options& opt, const SIO::Triangle_soup& soup, const SIO::M
         .end_object();
       j.key("solved_mesh").begin_object()
         .key("vertices").value(report.vertices).key("edges").value(report.edges).key("faces").value(report.faces)
-        .key("components").value(report.components).key("genus").value(std::size_t(report.genus))
-        .key("border_edges").value(report.border_edges).key("border_loops").value(report.border_loops)
+        .key("components").value(report.components);
+      json_topology(j, report);
+      j.key("border_edges").value(report.border_edges).key("border_loops").value(report.border_loops)
         .key("nonmanifold_vertices").value(report.nonmanifold_vertices)
         .key("nonmanifold_edges").value(report.nonmanifold_edges)
         .key("nonorientable_edges").value(report.nonorientable_edges)
@@ -118,6 +125,7 @@ int run_on_soup(const Options& opt, const SIO::Triangle_soup& soup, const SIO::M
         .key("interior_endpoints").value(report.interior_endpoints)
         .key("dropped_curve_edges").value(report.dropped_curve_edges)
         .key("inconsistent_curve_vertices").value(report.inconsistent_curve_vertices)
+        .key("nonmanifold_label_jumps").value(report.nonmanifold_label_jumps)
         .key("nonbounding_edges").value(G_edges).key("bounding_edges").value(bounding_edges)
         .key("nonbounding_closing_units").value(report.nonbounding_closing_units)
         .end_object();

@@ -53,7 +53,18 @@ struct Solve_report
   std::size_t components = 0;        ///< connected components of the mesh
   std::size_t border_edges = 0;      ///< edges with a single incident face
   std::size_t border_loops = 0;      ///< closed loops of border edges (boundary components)
-  int genus = 0;                     ///< sum of the genera of the components (meaningful on oriented 2-manifolds)
+  /// Euler characteristic V - E + F of the mesh (the sum over its components; isolated vertices do not
+  /// count). Triangulating faces of more than three sides does not change it.
+  long euler_characteristic = 0;
+  /// `true` iff the faces of every component can be oriented so that each edge with exactly two faces
+  /// is traversed once each way (`false` for a Moebius strip; edges with more than two faces are not
+  /// considered). Faces that are not consistently oriented as given (`nonorientable_edges`) do not make
+  /// an orientable surface nonorientable.
+  bool orientable = true;
+  /// sum of the genera \f$ g = (2 - \chi - b) / 2 \f$ of the components (\f$ b \f$: border loops),
+  /// defined when every component is an orientable 2-manifold, closed or with border; -1 where it is
+  /// not (a nonorientable or a nonmanifold component: see `euler_characteristic` and `orientable`)
+  int genus = 0;
   std::size_t nonmanifold_vertices = 0; ///< vertices whose faces form more than one fan, or on a nonmanifold edge
   std::size_t nonmanifold_edges = 0; ///< edges with more than two incident faces
   /// edges whose two faces traverse them the same way (a nonorientable gluing; curves there are dual
@@ -103,6 +114,14 @@ struct Solve_report
   /// units of flow added to round(g) to close the nonbounding loops \f$ G \f$ (0 when rounding
   /// edge by edge already gave closed loops; see \ref SWNClosedG)
   std::size_t nonbounding_closing_units = 0;
+  /// nonmanifold edges (more than two faces) whose faces do not all carry the same label, although
+  /// nothing may jump there: the labels there depend on which flaps are taken as one sheet. This happens
+  /// where a curve given as directed edges crosses a spine between two flaps whose faces traverse it the
+  /// same way (not oriented as one sheet): the side of the curve that is higher is taken from each face's
+  /// orientation, so it swaps at the spine (a dual chain does not depend on it); and where a flap the
+  /// curve does not cover closes the region along another path than the flaps it covers, a near tie of
+  /// Eq. 11 (\ref SWNNonmanifold).
+  std::size_t nonmanifold_label_jumps = 0;
   /// @}
   /// \name Timings
   /// @{

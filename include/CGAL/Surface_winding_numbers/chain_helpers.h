@@ -57,7 +57,7 @@ cannot serve as the reference; this function does not rely on it.) Linear in the
 \returns `false`, and leaves the chain unchanged, if one of these checks fails; `true` otherwise.
 */
 template <class TriangleMesh, class HalfedgeRange, class ChainMap>
-bool add_halfedges_to_chain(const TriangleMesh& tm, const HalfedgeRange& halfedges, ChainMap& chain,
+bool add_halfedges_to_chain(const TriangleMesh& tm, const HalfedgeRange& halfedges, ChainMap chain,
                             int multiplicity = 1)
 {
   typedef typename boost::property_traits<ChainMap>::value_type V;
@@ -87,7 +87,7 @@ each edge between consecutive vertices. Repeat the first vertex at the end to cl
          or a check of the precondition fails; `true` otherwise.
 */
 template <class TriangleMesh, class VertexRange, class ChainMap>
-bool add_vertex_polyline_to_chain(const TriangleMesh& tm, const VertexRange& polyline, ChainMap& chain,
+bool add_vertex_polyline_to_chain(const TriangleMesh& tm, const VertexRange& polyline, ChainMap chain,
                                   int multiplicity = 1)
 {
   typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;

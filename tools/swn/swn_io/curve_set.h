@@ -59,6 +59,9 @@ struct Curve_dual_pair
   std::size_t face_b = 0;
   /// 1-based line of the `c` record
   std::size_t line = 0;
+  /// the offset added to the record's indices when they were read (-1 for 1-based indices): the file
+  /// numbers the faces `face_a - index_offset` and `face_b - index_offset`
+  long long index_offset = -1;
 };
 
 /*!

@@ -10,6 +10,7 @@
 
 #include "swn_io/errors.h"
 
+#include <CGAL/Surface_winding_numbers/internal/polygon_tables.h>
 #include <CGAL/Surface_winding_numbers/internal/union_find.h>
 #include <CGAL/Surface_winding_numbers/internal/unit_scale.h>
 
@@ -72,8 +73,8 @@ struct Mesh_read_info
   std::size_t duplicated_vertex_positions = 0;
   /// STL only: number of corner records merged into an existing vertex (exact equality of coordinates)
   std::size_t merged_stl_vertices = 0;
-  /// polygon soups only: faces with exactly zero area (collinear corners), kept; triangle meshes with such a
-  /// face are refused (check_face_areas())
+  /// faces whose Newell normal is exactly zero (a self-overlapping polygon whose triangles have an area),
+  /// kept; faces with a triangle of zero area are refused (check_face_areas())
   std::size_t degenerate_faces = 0;
   /// human-readable warnings (one line each)
   std::vector<std::string> warnings;
@@ -181,24 +182,43 @@ void soup_from_points_and_polygons(const std::vector<Point>& points, const std::
 
 // ------------------------------------------------------------------------------------------------ checks
 
+// the vertices of face f of the soup, in its order
+inline std::vector<std::size_t> soup_face(const Triangle_soup& soup, std::size_t f)
+{
+  if(!soup.polygons.empty()) return soup.polygons[f];
+  return std::vector<std::size_t>(soup.triangles[f].begin(), soup.triangles[f].end());
+}
+
 // Zero-area faces are refused with their line, by the library's criterion and scaling (the points brought
-// to a unit bounding box: the test depends on the shape of the faces, not on the unit of the file).
+// to a unit bounding box: the test depends on the shape of the faces, not on the unit of the file). A face
+// of more than three sides is refused when a triangle of the library's triangulation of it has zero area.
 inline void check_face_areas(const Triangle_soup& soup, const std::string& file)
 {
+  namespace SWNI = CGAL::Surface_winding_numbers::internal;
   static_assert(sizeof(std::array<double, 3>) == 3 * sizeof(double), "points must be contiguous");
-  const double s = CGAL::Surface_winding_numbers::internal::unit_scale(soup.points.empty() ? nullptr : soup.points[0].data(),
-                                                                       soup.points.size());
-  for(std::size_t f = 0; f < soup.triangles.size(); ++f)
+  const double s = SWNI::unit_scale(soup.points.empty() ? nullptr : soup.points[0].data(), soup.points.size());
+  std::vector<double> xyz;
+  std::vector<std::size_t> corners;
+  const std::size_t nf = number_of_faces(soup);
+  for(std::size_t f = 0; f < nf; ++f)
   {
-    const auto& t = soup.triangles[f];
-    double p[3][3];
-    for(int c = 0; c < 3; ++c)
-      for(int k = 0; k < 3; ++k) p[c][k] = s * soup.points[t[c]][k];
-    if(CGAL::Surface_winding_numbers::internal::zero_area_triangle(p[0], p[1], p[2]))
+    corners = soup_face(soup, f);
+    xyz.resize(3 * corners.size());
+    for(std::size_t c = 0; c < corners.size(); ++c)
+      for(std::size_t k = 0; k < 3; ++k) xyz[3 * c + k] = s * soup.points[corners[c]][k];
+    std::vector<std::size_t> local(corners.size());
+    for(std::size_t c = 0; c < corners.size(); ++c) local[c] = c;
+    for(const auto& t : SWNI::triangulate_polygon(xyz, local))
+    {
+      if(!SWNI::zero_area_triangle(&xyz[3 * t[0]], &xyz[3 * t[1]], &xyz[3 * t[2]])) continue;
+      std::string listed;
+      for(std::size_t c = 0; c < corners.size(); ++c) listed += (c ? ", " : "") + std::to_string(corners[c]);
       throw Input_error(file, f < soup.triangle_lines.size() ? soup.triangle_lines[f] : 0,
-                        "face " + std::to_string(f) + " has zero area (degenerate triangle): its vertices " +
-                            std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " + std::to_string(t[2]) +
-                            " are collinear or coincide");
+                        "face " + std::to_string(f) + " has zero area (degenerate " +
+                            (corners.size() == 3 ? std::string("triangle): its vertices ") + listed + " are collinear or coincide"
+                                                 : "polygon): three of its vertices " + listed +
+                                                       " are collinear or coincide where it is triangulated"));
+    }
   }
 }
 
@@ -211,7 +231,9 @@ inline std::string edge_name(std::size_t a, std::size_t b)
 constexpr std::uint32_t no_twin = (std::numeric_limits<std::uint32_t>::max)();
 
 /// Checks the faces of a soup (triangles or polygons): not empty, not too large, indices in range, no
-/// repeated vertex in a face. Throws `Input_error` on the first problem, with the face's line.
+/// repeated vertex in a face, and in a soup with polygons no zero-area face (check_face_areas(), which a
+/// triangle soup gets once it is known whether it is a mesh). Throws `Input_error` on the first problem,
+/// with the face's line.
 inline void check_soup_faces(const Triangle_soup& soup, const std::string& file)
 {
   const std::size_t nv = soup.points.size(), nf = number_of_faces(soup);
@@ -235,6 +257,7 @@ inline void check_soup_faces(const Triangle_soup& soup, const std::string& file)
     if(std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
       throw Input_error(file, fline(f), "face " + std::to_string(f) + " has a repeated vertex (" + listed + ")");
   }
+  if(!soup.polygons.empty()) check_face_areas(soup, file);   // the library would refuse them without a line
 }
 
 /// Tells whether a triangle soup with checked faces is an oriented 2-manifold: returns "" if it is, else what

@@ -274,7 +274,7 @@ Curve_set read_authors_curves(std::istream& is, const std::string& file, std::si
         faces.push_back(f);
       }
       for(std::size_t k = 0; k + 1 < faces.size(); ++k)
-        cs.dual_pairs.push_back(Curve_dual_pair{faces[k], faces[k + 1], lr.line_number()});
+        cs.dual_pairs.push_back(Curve_dual_pair{faces[k], faces[k + 1], lr.line_number(), offset});
     }
     else if(kw == "n")
       continue;

@@ -132,8 +132,8 @@ Mesh_read_info read_mesh(const std::string& filename, CGAL::Surface_mesh<Point>&
   triangle mesh (the first problem in file order, as `read_mesh()` would report it); `mesh` is then empty and
   `soup` holds the checked faces. `info` gets the statistics, warnings and OBJ curve records either way.
   \throws Input_error on a missing file or invalid input (indices out of range, repeated vertices, faces with
-  fewer than three vertices, non-finite coordinates, no face, a zero-area face when every face is a
-  triangle)
+  fewer than three vertices, non-finite coordinates, no face, a zero-area face, or a face
+  of more than three sides with a zero-area triangle in the library's triangulation)
 */
 template <class Point>
 std::string read_mesh_or_soup(std::istream& is, const std::string& fmt, const std::string& filename,

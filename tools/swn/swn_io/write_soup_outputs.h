@@ -31,12 +31,6 @@ typedef std::map<std::pair<std::size_t, std::size_t>, double> Soup_corner_values
 
 namespace internal {
 
-inline std::vector<std::size_t> soup_face(const Triangle_soup& soup, std::size_t f)
-{
-  if(!soup.polygons.empty()) return soup.polygons[f];
-  return std::vector<std::size_t>(soup.triangles[f].begin(), soup.triangles[f].end());
-}
-
 template <class T>
 void write_little_endian(Output_buffer& out, T x)
 {

@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -175,6 +176,43 @@ struct Mesh_tables
     return true;
   }
 };
+
+// Per component: 1 if its faces can be oriented so that every edge with exactly two faces is
+// traversed once each way (edges with more faces are not considered), 0 otherwise (a Moebius strip).
+// Found by propagating a flip bit across the arcs of two-sided edges (breadth first per component).
+inline std::vector<char> component_orientable(const Mesh_tables& m)
+{
+  std::vector<char> orientable(m.n_components, 1);
+  std::vector<std::vector<std::pair<std::size_t, char>>> next(m.nf);   // face -> (face, flip between them)
+  for(const Arc& a : m.arcs)
+  {
+    if(m.edge_side_begin[a.edge + 1] - m.edge_side_begin[a.edge] != 2) continue;
+    const std::size_t f = a.left_side / 3, g = a.right_side / 3;
+    const char flip = m.fs[a.left_side] == m.fs[a.right_side] ? 1 : 0;
+    next[f].emplace_back(g, flip);
+    next[g].emplace_back(f, flip);
+  }
+  std::vector<signed char> flipped(m.nf, -1);
+  std::vector<std::size_t> stack;
+  for(std::size_t f0 = 0; f0 < m.nf; ++f0)
+  {
+    if(flipped[f0] != -1) continue;
+    flipped[f0] = 0;
+    stack.assign(1, f0);
+    while(!stack.empty())
+    {
+      const std::size_t f = stack.back();
+      stack.pop_back();
+      for(const auto& gf : next[f])
+      {
+        const signed char want = static_cast<signed char>(flipped[f] ^ gf.second);
+        if(flipped[gf.first] == -1) { flipped[gf.first] = want; stack.push_back(gf.first); }
+        else if(flipped[gf.first] != want) orientable[m.face_component[f]] = 0;
+      }
+    }
+  }
+  return orientable;
+}
 
 // Nonmanifold vertices: the ends of nonmanifold edges, and vertices whose corners fall into several
 // fans (corners of one vertex joined across its arcs of two-sided edges); then the edges at them.

@@ -285,6 +285,13 @@ public:
     }
     r.G = nonbounding_chain(m_, r.g, chain, &rep.nonbounding_closing_units);
     r.bounding = bounding_chain(m_, r.labels);
+    rep.nonmanifold_label_jumps = 0;
+    for(std::size_t e : m_.unpaired_edges)
+    {
+      const std::size_t b = m_.edge_side_begin[e], n = m_.edge_side_begin[e + 1] - b;
+      for(std::size_t i = 1; i < n; ++i)
+        if(r.labels[m_.edge_sides[b + i] / 3] != r.labels[m_.edge_sides[b] / 3]) { ++rep.nonmanifold_label_jumps; break; }
+    }
     rep.min_label = rep.max_label = r.labels.empty() ? 0 : r.labels[0];
     for(int l : r.labels) { rep.min_label = std::min(rep.min_label, l); rep.max_label = std::max(rep.max_label, l); }
     rep.time_labels = clock.lap();
@@ -423,10 +430,19 @@ public:
     for(char b : m_.edge_on_border) rep.border_edges += b ? 1 : 0;
     rep.genus = 0;
     rep.border_loops = 0;
+    rep.euler_characteristic = 0;
+    const std::vector<char> orientable = component_orientable(m_);
+    rep.orientable = std::find(orientable.begin(), orientable.end(), char(0)) == orientable.end();
+    // the genus is defined on orientable 2-manifolds only (with or without border)
+    std::vector<char> manifold(m_.n_components, 1);
+    for(std::size_t v = 0; v < m_.nv; ++v)
+      if(m_.is_nonmanifold(v) && m_.vertex_component[v] != npos) manifold[m_.vertex_component[v]] = 0;
     for(std::size_t c = 0; c < m_.n_components; ++c)
     {
       rep.border_loops += border_loops(c);
-      rep.genus += int((2 - m_.component_euler_characteristic[c] - long(border_loops(c))) / 2);
+      rep.euler_characteristic += m_.component_euler_characteristic[c];
+      if(rep.genus < 0 || !manifold[c] || !orientable[c]) rep.genus = -1;
+      else rep.genus += int((2 - m_.component_euler_characteristic[c] - long(border_loops(c))) / 2);
     }
     rep.degenerate_weights = clamped_weights_;
     rep.nonmanifold_vertices = m_.nonmanifold_vertices;
@@ -449,23 +465,21 @@ private:
     vertex_order_computed_ = true;
   }
 
+  // border loops: the connected sets of border edges (through their vertices), which does not depend on
+  // how the faces are oriented (a soup's faces need not be)
   void count_border_loops() const
   {
     border_loops_.assign(m_.n_components, 0);
-    std::vector<std::size_t> next(m_.nv, npos);
+    Union_find sets(m_.nv);
+    std::vector<char> on_border(m_.nv, 0);
     for(std::size_t e = 0; e < m_.ne; ++e)
       if(m_.edge_on_border[e])
       {
-        const std::size_t s = m_.edge_sides[m_.edge_side_begin[e]];
-        next[m_.head(s)] = m_.tail(s);   // walk the border against the face's orientation
+        sets.unite(m_.ev[2 * e], m_.ev[2 * e + 1]);
+        on_border[m_.ev[2 * e]] = on_border[m_.ev[2 * e + 1]] = 1;
       }
-    std::vector<char> seen(m_.nv, 0);
     for(std::size_t v = 0; v < m_.nv; ++v)
-    {
-      if(next[v] == npos || seen[v]) continue;
-      ++border_loops_[m_.vertex_component[v]];
-      for(std::size_t x = v; x != npos && !seen[x]; x = next[x]) seen[x] = 1;
-    }
+      if(on_border[v] && sets.find(v) == v) ++border_loops_[m_.vertex_component[v]];
   }
 
   Mesh_tables m_;
