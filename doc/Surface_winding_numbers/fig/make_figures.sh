@@ -19,3 +19,5 @@ python3 "$fig/render_ply.py" "$tmp/stamp/mesh.ply" "$fig/stamp_bunny.png" --dire
 
 "$build/examples/selection_and_segmentation" "$tmp/selection"
 python3 "$fig/render_ply.py" "$tmp/selection_labels.ply" "$fig/selection_and_segmentation.png" --direction 0,-0.3,-1
+python3 "$fig/render_ply.py" "$tmp/selection_noisy.ply" "$fig/selection_noisy.png" --direction=-0.2,-0.1,-1 --size 400
+python3 "$fig/render_ply.py" "$tmp/selection_cleaned.ply" "$fig/selection_cleaned.png" --direction=-0.2,-0.1,-1 --size 400
