@@ -138,10 +138,10 @@ connected component, the label covering the largest area is 0, unless the named 
     \cgalParamType{`boost::graph_traits<TriangleMesh>::%face_descriptor`}
     \cgalParamDefault{none: the label covering the largest area of each component is 0}
   \cgalParamNEnd
-  \cgalParamNBegin{Surface_winding_numbers::parameters::concurrent_factorizations}
-    \cgalParamDescription{when the curve has interior endpoints on a mesh with handles, computes the per-mesh part of the Hodge projection (the harmonic basis, or the factorized 2-form Laplacian on meshes with more than 24 homology classes) on a second thread (`std::async`) while the first jump-Laplace system is factorized and solved; same results either way. Set it to `false` if the sparse linear solver cannot run two factorizations at once}
-    \cgalParamType{Boolean}
-    \cgalParamDefault{`true` (`false` without `CGAL_HAS_THREADS`)}
+  \cgalParamNBegin{Surface_winding_numbers::parameters::concurrency}
+    \cgalParamDescription{the one switch for the package's threads: with `CGAL::Parallel_tag()` (or `true`) one more thread (`std::async`) may compute the per-mesh part of the Hodge projection (the harmonic basis, or the factorized 2-form Laplacian on meshes with more than 24 homology classes) while the first jump-Laplace system is factorized and solved, and solve the second half of large bands in `LEMON_residual_solver`; with `CGAL::Sequential_tag()` (or `false`) everything runs on the calling thread, for instance if the sparse linear solver cannot run two factorizations at once (always so without `CGAL_HAS_THREADS`). Same results either way}
+    \cgalParamType{`CGAL::Sequential_tag`, `CGAL::Parallel_tag` or a Boolean}
+    \cgalParamDefault{`CGAL::Parallel_tag()`}
   \cgalParamNEnd
   \cgalParamNBegin{Surface_winding_numbers::parameters::keep_hodge_factorization}
     \cgalParamDescription{ignored here: this function solves once, and frees the per-mesh part of the Hodge projection as soon as the harmonic part is computed, before the residual step (lower peak memory). `Surface_winding_numbers_solver::solve()` keeps it by default for the next solve on the same mesh}
