@@ -227,14 +227,14 @@ TEST(ConformingCut, ManyPointsInOneFace)
   expect_no_degenerate_triangle(r.mesh);
   auto b = chain_boundary(r.mesh, r.chain);
   EXPECT_EQ(count_nonzero(b), 4u);
-  // p0->p2 and p4->p1 cross inside face 0
+  // p0->p2 and p4->p1 cross inside face 0: a vertex at the crossing
   std::istringstream is2("#offset 0\ne 0 0.25\ne 0 0.75\ne 1 0.5\ne 2 0.3\ne 2 0.6\nl 0 2\n#\nl 4 1\n");
-  try { IO::conforming_cut(g, IO::read_curves(is2, "cross.txt", g)); FAIL(); }
-  catch(const IO::Input_error& e)
-  {
-    EXPECT_EQ(e.line, 9u);
-    EXPECT_NE(std::string(e.what()).find("line 7"), std::string::npos);
-  }
+  r = IO::conforming_cut(g, IO::read_curves(is2, "cross.txt", g), o);
+  EXPECT_EQ(r.cut_new_vertices, 5u);
+  EXPECT_TRUE(r.mesh.is_valid(false));
+  EXPECT_EQ(long(r.mesh.number_of_vertices()) - long(r.mesh.number_of_edges()) + long(r.mesh.number_of_faces()), 1);
+  expect_no_degenerate_triangle(r.mesh);
+  EXPECT_EQ(count_nonzero(chain_boundary(r.mesh, r.chain)), 4u);
 }
 
 TEST(ConformingCut, DuplicatePointsAndDegenerateSegments)
@@ -438,20 +438,10 @@ TEST(LibraryConformingCut, RefusedCurvesLeaveEverythingUnchanged)
   auto on = [&](std::size_t a, std::size_t b, double t) { return PMP::locate_on_halfedge(m.halfedge(v[a], v[b]), t, m); };
   auto at = [&](std::size_t a) { return PMP::locate_vertex<double>(v[a], m); };
 
-  // in face (0, 1, 5): the midpoint of 0-1 to the midpoint of 1-5, then vertex 1 to the midpoint of 5-0: they cross
-  std::vector<std::vector<Location> > crossing{{on(0, 1, 0.5), on(1, 5, 0.5)}, {at(1), on(5, 0, 0.5)}};
-  auto r = SWN::conforming_cut(m, crossing, chain);
-  EXPECT_FALSE(bool(r));
-  EXPECT_EQ(r.error, r.CROSSING_SEGMENTS);
-  EXPECT_EQ(r.curve, 1u);
-  EXPECT_EQ(r.index, 0u);
-  EXPECT_EQ(r.other_curve, 0u);
-  EXPECT_EQ(r.other_index, 0u);
-  unchanged();
   // a point strictly inside a face
   const FI f0 = *m.faces().begin();
   std::vector<std::vector<Location> > inside{{at(0), Location(f0, {0.2, 0.3, 0.5})}};
-  r = SWN::conforming_cut(m, inside, chain);
+  auto r = SWN::conforming_cut(m, inside, chain);
   EXPECT_EQ(r.error, r.INVALID_LOCATION);
   EXPECT_EQ(r.index, 1u);
   unchanged();
@@ -470,4 +460,35 @@ TEST(LibraryConformingCut, RefusedCurvesLeaveEverythingUnchanged)
   EXPECT_EQ(r.refined_pieces, 1u);
   EXPECT_EQ(r.refinement_vertices, 7u);
   EXPECT_EQ(r.refinement_faces, 14u);
+}
+
+TEST(LibraryConformingCut, CrossingSegmentsGetAVertexWhereTheyCross)
+{
+  Mesh m;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(tdata + "grid4.off", m));
+  const std::vector<VI> v = grid_vertices(m);
+  auto chain = m.add_property_map<Mesh::Edge_index, int>("e:chain", 0).first;
+  auto on = [&](std::size_t a, std::size_t b, double t) { return PMP::locate_on_halfedge(m.halfedge(v[a], v[b]), t, m); };
+  // in face (0, 1, 5): the midpoint of 0-1 to the midpoint of 1-5, and vertex 1 to the midpoint of 5-0: they
+  // cross at (0.75, 0.25)
+  const std::vector<std::vector<PMP::Face_location<Mesh, double> > > crossing{
+    {on(0, 1, 0.5), on(1, 5, 0.5)}, {PMP::locate_vertex<double>(v[1], m), on(5, 0, 0.5)}};
+  const auto r = SWN::conforming_cut(m, crossing, chain, SWN::parameters::refine_short_pieces(false));
+  ASSERT_TRUE(bool(r)) << r.message;
+  EXPECT_EQ(r.crossing_vertices, 1u);
+  EXPECT_EQ(r.cut_vertices, 4u);   // three on edges, one at the crossing
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(m) && CGAL::is_triangle_mesh(m));
+  expect_no_degenerate_triangle(m);
+  const VI x(Mesh::size_type(m.number_of_vertices() - 1));
+  EXPECT_EQ(m.point(x), Point(0.75, 0.25, 0));
+  // each curve runs through the crossing: four chain edges there, two in and two out
+  int in = 0, out = 0;
+  for(auto e : m.edges())
+  {
+    const int c = chain[e];
+    if(m.target(m.halfedge(e)) == x) (c > 0 ? in : out) += std::abs(c);
+    if(m.source(m.halfedge(e)) == x) (c > 0 ? out : in) += std::abs(c);
+  }
+  EXPECT_EQ(in, 2);
+  EXPECT_EQ(out, 2);
 }

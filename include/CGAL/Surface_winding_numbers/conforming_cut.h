@@ -48,7 +48,7 @@ struct Conforming_cut_result
     NO_ERROR,          ///< the cut was done
     INVALID_LOCATION,  ///< a point has no face, coordinates that are negative or not finite, or lies strictly inside its face
     NO_COMMON_FACE,    ///< the two points of a segment lie on no common face
-    CROSSING_SEGMENTS  ///< two segments cross inside a face
+    CROSSING_SEGMENTS  ///< not returned: segments that cross inside a face get a vertex where they cross
   };
 
   /// `NO_ERROR`, or why the cut was refused (the mesh and the chain are then unchanged)
@@ -60,7 +60,7 @@ struct Conforming_cut_result
   std::size_t curve = 0;
   /// see `curve`
   std::size_t index = 0;
-  /// on `CROSSING_SEGMENTS`: the curve and the segment crossed by the segment at fault
+  /// not used (see `CROSSING_SEGMENTS`)
   std::size_t other_curve = 0;
   /// see `other_curve`
   std::size_t other_index = 0;
@@ -76,6 +76,8 @@ struct Conforming_cut_result
   std::size_t cut_vertices = 0;
   /// faces added by the cut
   std::size_t cut_faces = 0;
+  /// vertices added by the cut inside faces, where segments cross (included in `cut_vertices`)
+  std::size_t crossing_vertices = 0;
   /// chain pieces refined
   std::size_t refined_pieces = 0;
   /// vertices added by the refinement of short pieces
@@ -120,6 +122,11 @@ struct Cut_face
   std::array<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, 3> corner;
   std::array<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor, 3> side;
   std::vector<std::size_t> chords;                                        // segments, deduplicated
+  // where chords cross: for each chord, its crossings (parameter from its first point, crossing) in order;
+  // each crossing's barycentric coordinates, and its vertex once inserted
+  std::vector<std::vector<std::pair<double, std::size_t> > > crossings;
+  std::vector<std::array<double, 3> > inner;
+  std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> inner_vertex;
 };
 
 struct Cut_segment
@@ -145,8 +152,11 @@ location: a face `f` and three barycentric coordinates with respect to `source(h
 Consecutive points are joined by a straight segment inside a face or along an edge. The cut:
 
 - inserts a vertex (`CGAL::Euler::split_edge()`) at every point on an edge, at the combination of the edge's
-  ends with the point's coordinates; no vertex moves, and points equal as locations (same vertex, or same edge
-  and same coordinates) become one vertex;
+  ends with the point's coordinates; no vertex moves. Coordinates below \f$ 10^{-9} \f$ times their sum are
+  0 (the point is on an edge, or a vertex, up to rounding), and points of one edge closer than
+  \f$ 10^{-9} \f$ times its length become one vertex, as do points equal as locations;
+- where two segments cross inside a face, inserts a vertex at the crossing (crossings closer than
+  \f$ 10^{-9} \f$ times a segment's length along it are one vertex, through which all the segments go);
 - splits every face crossed by segments along them and triangulates the rest of every face that received a
   vertex on its sides (`CGAL::Euler::split_face()`), never making a triangle out of three collinear vertices
   (ears are clipped at the corners of each piece, the ear with the largest smallest angle first);
@@ -165,11 +175,12 @@ Split edges keep their chain value (both halves), so `chain` may already hold cu
 their descriptor: every face not cut, and one piece of each cut face `f`, the triangle with the vertex
 `v = target(halfedge(f, tm), tm)` of the input (and `target(halfedge(f, tm), tm)` is still `v`); other pieces and the vertices are added with
 `add_face()` and `add_vertex()`, so with `CGAL::Surface_mesh` (without removed elements) the indices of the
-input are kept and the new ones follow: the vertices of the cut in the order of their first use by the
-curves, the faces of the cut in the order of `faces(tm)`, then those of the refinement.
+input are kept and the new ones follow: the vertices of the cut on edges in the order of their first use by
+the curves, then the faces of the cut and the crossings face by face in the order of `faces(tm)`, then those
+of the refinement.
 
-Nothing is changed when the curves are refused: a point strictly inside a face, two consecutive points on
-no common face, or two segments crossing inside a face (the result tells which).
+Nothing is changed when the curves are refused: a point strictly inside a face, or two consecutive points
+on no common face (the result tells which).
 
 \tparam TriangleMesh a model of `MutableFaceGraph`, `FaceListGraph`, `EdgeListGraph` and `VertexListGraph` whose
         faces are triangles
@@ -244,6 +255,7 @@ conforming_cut(TriangleMesh& tm, const CurveRange& curves, ChainMap chain,
   const bool refine = choose_parameter(get_parameter(np, snp::refine_short_pieces), true);
   const std::size_t min_edges = choose_parameter(get_parameter(np, snp::minimum_piece_edges), std::size_t(8));
   const std::size_t none = std::size_t(-1);
+  const FT snap(internal::cut_snap_tolerance);   // relative to the face or the edge
 
   Result result;
   auto refuse = [&](typename Result::Error error, std::size_t curve, std::size_t index, const std::string& message) {
@@ -275,11 +287,21 @@ conforming_cut(TriangleMesh& tm, const CurveRange& curves, ChainMap chain,
         std::array<FT, 3> w;
         int zeros = 0;
         bool valid = f != Traits::null_face();
+        FT sum(0);
         for(int k = 0; k < 3; ++k)
         {
           w[k] = FT(location.second[k]);
-          valid = valid && CGAL::is_finite(w[k]) && !(w[k] < FT(0));
-          zeros += (w[k] == FT(0)) ? 1 : 0;
+          valid = valid && CGAL::is_finite(w[k]) && !(w[k] < -snap);
+          sum += w[k];
+        }
+        valid = valid && sum > FT(0);
+        // coordinates within the snapping tolerance of 0 are 0: the point is on the border up to rounding
+        for(int k = 0; valid && k < 3; ++k)
+          if(!(w[k] > snap * sum)) { w[k] = FT(0); ++zeros; }
+        if(valid && zeros < 3)
+        {
+          sum = w[0] + w[1] + w[2];
+          for(int k = 0; k < 3; ++k) w[k] = w[k] / sum;
         }
         if(!valid || zeros == 0 || zeros == 3)
           return refuse(Result::INVALID_LOCATION, c, j,
@@ -315,8 +337,8 @@ conforming_cut(TriangleMesh& tm, const CurveRange& curves, ChainMap chain,
             put(edge_of, edge(e, tm), cut_edges.size());
           }
           auto& ce = cut_edges[get(edge_of, edge(e, tm)) - 1];
-          for(std::size_t p : ce.points)
-            if(points[p].at_source == at_source && points[p].at_target == at_target) id = p;
+          for(std::size_t p : ce.points)   // one point for points on an edge closer than the tolerance
+            if(CGAL::abs(points[p].at_target - at_target) <= snap) id = p;
           if(id == points.size())
           {
             points.emplace_back();
@@ -402,7 +424,7 @@ conforming_cut(TriangleMesh& tm, const CurveRange& curves, ChainMap chain,
       segments.push_back(s);
     }
 
-  // ---- chords of every face: deduplicated, and no two of them may cross
+  // ---- chords of every face, deduplicated; where two of them cross, a vertex inside the face
   // position of a point on the border of a cut face: (side, coordinate of the side's end)
   auto position = [&](const internal::Cut_face<TriangleMesh>& cf, std::size_t p) {
     for(int k = 0; k < 3; ++k)
@@ -418,29 +440,43 @@ conforming_cut(TriangleMesh& tm, const CurveRange& curves, ChainMap chain,
     }
     return std::make_pair(3, FT(0));   // cannot happen: the point is on the face
   };
+  std::vector<std::size_t> chord_of(segments.size(), none);   // the chord a segment inside a face runs along
   for(std::size_t s = 0; s < segments.size(); ++s)
   {
     if(segments[s].face == none) continue;
     auto& cf = cut_faces[segments[s].face];
-    auto lo = position(cf, segments[s].a), hi = position(cf, segments[s].b);
-    if(hi < lo) std::swap(lo, hi);
-    bool duplicate = false;
     for(std::size_t t : cf.chords)
     {
       const std::size_t a = segments[t].a, b = segments[t].b;
-      if((a == segments[s].a && b == segments[s].b) || (a == segments[s].b && b == segments[s].a)) { duplicate = true; break; }
-      auto lo2 = position(cf, a), hi2 = position(cf, b);
-      if(hi2 < lo2) std::swap(lo2, hi2);
-      if((lo < lo2 && lo2 < hi && hi < hi2) || (lo2 < lo && lo < hi2 && hi2 < hi))
-      {
-        refuse(Result::CROSSING_SEGMENTS, segments[s].curve, segments[s].index,
-               "the segment crosses another segment inside a face (crossing segments are not supported)");
-        result.other_curve = segments[t].curve;
-        result.other_index = segments[t].index;
-        return result;
-      }
+      if((a == segments[s].a && b == segments[s].b) || (a == segments[s].b && b == segments[s].a)) chord_of[s] = t;
     }
-    if(!duplicate) cf.chords.push_back(s);
+    if(chord_of[s] == none)
+    {
+      chord_of[s] = s;
+      cf.chords.push_back(s);
+    }
+  }
+  for(auto& cf : cut_faces)
+  {
+    const std::size_t n = cf.chords.size();
+    std::vector<std::pair<std::pair<int, FT>, std::pair<int, FT> > > range(n);
+    std::vector<std::array<double, 3> > from(n), to(n);
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const internal::Cut_segment& sg = segments[cf.chords[i]];
+      range[i] = std::make_pair(position(cf, sg.a), position(cf, sg.b));
+      for(int end = 0; end < 2; ++end)
+      {
+        const auto pos = end == 0 ? range[i].first : range[i].second;
+        std::array<double, 3>& bary = end == 0 ? from[i] : to[i];
+        bary = {0., 0., 0.};
+        bary[pos.first] = 1 - CGAL::to_double(pos.second);
+        bary[(pos.first + 1) % 3] = CGAL::to_double(pos.second);
+      }
+      if(range[i].second < range[i].first) std::swap(range[i].first, range[i].second);
+    }
+    internal::chord_crossings(range, from, to, cf.crossings, cf.inner);
+    result.crossing_vertices += cf.inner.size();
   }
   for(const auto& ce : cut_edges)
   {
@@ -483,15 +519,20 @@ conforming_cut(TriangleMesh& tm, const CurveRange& curves, ChainMap chain,
   {
     auto line = get(CGAL::dynamic_halfedge_property_t<int>(), tm);
     int next_line = 3;
-    std::vector<std::pair<vertex_descriptor, vertex_descriptor> > chords;
+    std::vector<internal::Face_chord<vertex_descriptor> > chords;
     for(face_descriptor f : faces(tm))   // in the order of faces(tm), for the numbering of the new faces
     {
       if(get(face_of, f) == 0) continue;
-      const auto& cf = cut_faces[get(face_of, f) - 1];
+      auto& cf = cut_faces[get(face_of, f) - 1];
       chords.clear();
-      for(std::size_t s : cf.chords) chords.emplace_back(points[segments[s].a].vertex, points[segments[s].b].vertex);
+      for(std::size_t i = 0; i < cf.chords.size(); ++i)
+      {
+        chords.push_back({points[segments[cf.chords[i]].a].vertex, points[segments[cf.chords[i]].b].vertex, {}});
+        for(const auto& c : cf.crossings[i]) chords.back().inner.push_back(c.second);
+      }
       // f keeps the piece with target(halfedge(f)), the first vertex of f for meshes read from files
-      internal::cut_and_triangulate_face(tm, vpm, f, cf.corner, chords, cf.corner[1], line, next_line, origin);
+      internal::cut_and_triangulate_face(tm, vpm, f, cf.corner, chords, cf.inner, cf.inner_vertex, cf.corner[1],
+                                         line, next_line, origin);
     }
   }
   // the curves on the edges
@@ -499,7 +540,17 @@ conforming_cut(TriangleMesh& tm, const CurveRange& curves, ChainMap chain,
   {
     const vertex_descriptor va = points[s.a].vertex, vb = points[s.b].vertex;
     std::vector<vertex_descriptor> path{va, vb};
-    if(s.edge != none)
+    if(s.face != none)   // its chord, through the crossings
+    {
+      const auto& cf = cut_faces[s.face];
+      const std::size_t c = chord_of[&s - segments.data()];
+      const std::size_t i = std::size_t(std::find(cf.chords.begin(), cf.chords.end(), c) - cf.chords.begin());
+      path.assign(1, points[segments[c].a].vertex);
+      for(const auto& x : cf.crossings[i]) path.push_back(cf.inner_vertex[x.second]);
+      path.push_back(points[segments[c].b].vertex);
+      if(path.front() != va) std::reverse(path.begin(), path.end());
+    }
+    else if(s.edge != none)
     {
       const auto& ce = cut_edges[s.edge];
       std::vector<vertex_descriptor> along{ce.source};

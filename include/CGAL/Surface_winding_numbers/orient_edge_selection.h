@@ -4,7 +4,9 @@
 #ifndef CGAL_SURFACE_WINDING_NUMBERS_ORIENT_EDGE_SELECTION_H
 #define CGAL_SURFACE_WINDING_NUMBERS_ORIENT_EDGE_SELECTION_H
 
+#include <CGAL/Surface_winding_numbers/Solve_report.h>
 #include <CGAL/Surface_winding_numbers/chain_helpers.h>
+#include <CGAL/Surface_winding_numbers/internal/descriptor_checks.h>
 
 #include <CGAL/Dynamic_property_map.h>
 #include <CGAL/Kernel/global_functions.h>
@@ -20,6 +22,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <string>
 #include <vector>
 
 namespace CGAL {
@@ -62,7 +65,11 @@ the region, without the spurious pieces (user manual, \ref SWNExampleSelection).
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
+\pre every element of `selection` is an edge of `tm`, and `chain` has a value for every edge of `tm`.
 \returns the number of pieces
+\throws Invalid_input, and leaves `chain` unchanged, if the precondition is found violated: an element of
+`selection` that is null (or, with a `Surface_mesh`, out of range or removed), or a `Surface_mesh` property
+map with fewer entries than the mesh has edges (a map of another mesh).
 */
 template <class TriangleMesh, class EdgeRange, class ChainMap,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -78,6 +85,17 @@ std::size_t orient_edge_selection(const TriangleMesh& tm, const EdgeRange& selec
   using CGAL::parameters::get_parameter;
 
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
+  // the precondition, checked before anything is read or written
+  std::size_t k = 0;
+  for(auto e : selection)
+  {
+    if(!internal::is_halfedge_of(halfedge(e, tm), tm))
+      throw Invalid_input("orient_edge_selection(): element " + std::to_string(k) +
+                          " of the selection is not an edge of the mesh (null, out of range or removed)");
+    ++k;
+  }
+  const std::string coverage = internal::map_coverage_error(chain, edges(tm), "orient_edge_selection(): the chain map", "edges");
+  if(!coverage.empty()) throw Invalid_input(coverage);
   auto selected = get(CGAL::dynamic_edge_property_t<bool>(), tm);   // false by default
   auto degree = get(CGAL::dynamic_vertex_property_t<int>(), tm);    // 0 by default
   std::vector<halfedge_descriptor> edges_in;

@@ -6,6 +6,7 @@
 
 #include <CGAL/Surface_winding_numbers/conforming_cut.h>
 #include <CGAL/Surface_winding_numbers/internal/surface_walk.h>
+#include <CGAL/Surface_winding_numbers/internal/unit_scale.h>
 #include <CGAL/Surface_winding_numbers/parameters.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
@@ -45,8 +46,8 @@ struct Polylines_to_chain_result
   /// segments between two points near the surface that the walk could not follow (border reached, or the
   /// plane section turning away): each one makes a gap
   std::size_t failed_walks = 0;
-  /// pieces of curve inside one face dropped because they crossed another piece there (each makes a gap
-  /// of one face)
+  /// pieces of curve dropped because they crossed another piece: always 0, crossings get a vertex of the
+  /// cut (`Conforming_cut_result::crossing_vertices`)
   std::size_t dropped_crossings = 0;
   /// curves (maximal unbroken pieces) put on the mesh
   std::size_t curves = 0;
@@ -80,10 +81,16 @@ The curve made of the points where walks cross edges is put on the mesh by `conf
 points strictly inside a face are not vertices of the curve (inside a face the curve is the straight
 chord between the two points where it crosses the face's border, within one face of the polyline).
 Crossings closer than 2 % of an edge's length to one of its ends are moved to that vertex, so that the
-cut makes no sliver triangle. A polyline whose last point equals its first is closed. Where two pieces of
-curve cross inside a face (self-intersecting strokes), one of them is dropped and leaves a gap of one
-face (counted in `dropped_crossings`). The open ends of a polyline end at its first and last edge
-crossing.
+cut makes no sliver triangle. Points that lie on an edge or a vertex up to rounding (barycentric
+coordinates below \f$ 10^{-9} \f$) are on it, and vertices within \f$ 10^{-9} \f$ mean edge lengths of a
+walk's plane are on the walk: a polyline that runs along edges, or through vertices, follows them, and a
+closed one stays closed. A polyline whose last point equals its first is closed. Where two pieces of curve
+cross inside a face (self-intersecting strokes), the cut puts a vertex at the crossing (one cut for all
+the curves). The open ends of a polyline end at its first and last edge crossing.
+
+The geometric queries (closest points, walks) run on the mesh's coordinates multiplied by a power of two
+that brings its bounding box to unit size, so that a mesh and its copies scaled by any power of ten from
+1e-150 to 1e150 get the same curve, up to the scale.
 
 \tparam TriangleMesh a model of `MutableFaceGraph`, `FaceListGraph`, `EdgeListGraph` and `VertexListGraph` whose
         faces are triangles
@@ -132,7 +139,7 @@ crossing.
 
 \returns what was done, with warnings for the polylines that gave nothing (empty, or with no point near
 the surface); converts to `false` and changes nothing if a point has a coordinate that is not finite
-(the error names the polyline and the point).
+(the error names the polyline and the point), or a vertex of the mesh.
 */
 template <class TriangleMesh, class PolylineRange, class ChainMap,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -145,10 +152,12 @@ polylines_to_chain(TriangleMesh& tm, const PolylineRange& polylines, ChainMap ch
   typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
   typedef typename GT::FT FT;
   typedef typename GT::Point_3 Point;
+  typedef typename GT::Vector_3 Vector_3;
   typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
-  typedef CGAL::AABB_face_graph_triangle_primitive<TriangleMesh, VPM> Primitive;
+  typedef internal::Scaled_point_map<VPM, Point> SPM;   // the queries run at unit scale
+  typedef CGAL::AABB_face_graph_triangle_primitive<TriangleMesh, SPM> Primitive;
   typedef CGAL::AABB_tree<CGAL::AABB_traits<GT, Primitive> > Tree;
-  typedef internal::Surface_walk<TriangleMesh, VPM, GT> Walk;
+  typedef internal::Surface_walk<TriangleMesh, SPM, GT> Walk;
   typedef typename Walk::Spot Spot;
   typedef CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, FT> Location;
   namespace PMP = CGAL::Polygon_mesh_processing;
@@ -179,12 +188,20 @@ polylines_to_chain(TriangleMesh& tm, const PolylineRange& polylines, ChainMap ch
     result.error = "the mesh has no face";
     return result;
   }
-  const double mean_edge = internal::mean_edge_length(tm, vpm);
-  const double tolerance = choose_parameter(get_parameter(np, internal_np::projection_tolerance), mean_edge);
+  bool finite = true;
+  const double unit = internal::mesh_unit_scale(tm, vpm, finite);
+  if(!finite)
+  {
+    result.error = "a vertex of the mesh has a coordinate that is not finite";
+    return result;
+  }
+  const SPM spm{vpm, unit};
+  const double mean_edge = internal::mean_edge_length(tm, spm);   // at unit scale
+  const double tolerance = choose_parameter(get_parameter(np, internal_np::projection_tolerance), mean_edge / unit);
 
   Tree tree;
-  PMP::build_AABB_tree(tm, tree, CGAL::parameters::vertex_point_map(vpm));
-  const Walk walker(tm, vpm, mean_edge);
+  PMP::build_AABB_tree(tm, tree, CGAL::parameters::vertex_point_map(spm));
+  const Walk walker(tm, spm, mean_edge);
 
   // ---- the spots of every curve, polyline by polyline
   std::vector<std::vector<Spot> > curves;
@@ -192,6 +209,8 @@ polylines_to_chain(TriangleMesh& tm, const PolylineRange& polylines, ChainMap ch
   for(const auto& polyline : polylines)
   {
     std::vector<Point> pts(std::begin(polyline), std::end(polyline));
+    for(Point& p : pts)   // at unit scale; points that overflow are far from the surface
+      p = Point(unit * CGAL::to_double(p.x()), unit * CGAL::to_double(p.y()), unit * CGAL::to_double(p.z()));
     result.pieces.emplace_back();
     result.points += pts.size();
     const bool closed = pts.size() > 2 && pts.front() == pts.back();
@@ -203,9 +222,12 @@ polylines_to_chain(TriangleMesh& tm, const PolylineRange& polylines, ChainMap ch
     std::size_t near_points = 0;
     for(std::size_t i = 0; i < n; ++i)
     {
-      loc[i] = PMP::locate_with_AABB_tree(pts[i], tree, tm, CGAL::parameters::vertex_point_map(vpm));
-      const Point q = PMP::construct_point(loc[i], tm, CGAL::parameters::vertex_point_map(vpm));
-      near[i] = std::sqrt(CGAL::to_double(CGAL::squared_distance(q, pts[i]))) <= tolerance;
+      const Vector_3 p = pts[i] - CGAL::ORIGIN;
+      near[i] = std::isfinite(CGAL::to_double(p.x())) && std::isfinite(CGAL::to_double(p.y())) && std::isfinite(CGAL::to_double(p.z()));
+      if(!near[i]) continue;
+      loc[i] = PMP::locate_with_AABB_tree(pts[i], tree, tm, CGAL::parameters::vertex_point_map(spm));
+      const Point q = PMP::construct_point(loc[i], tm, CGAL::parameters::vertex_point_map(spm));
+      near[i] = internal::length(q - pts[i]) <= tolerance * unit;
       near_points += near[i];
     }
     result.points_off_surface += (n - near_points) + (closed && !near[0]);
@@ -235,7 +257,7 @@ polylines_to_chain(TriangleMesh& tm, const PolylineRange& polylines, ChainMap ch
       if(!near[k]) { end_piece(); if(k == 0) wrap_broken = true; continue; }
       std::vector<Spot> crossed;
       const auto normal = walker.face_normal(loc[i].first) + walker.face_normal(loc[k].first);
-      const Point b = PMP::construct_point(loc[k], tm, CGAL::parameters::vertex_point_map(vpm));
+      const Point b = PMP::construct_point(loc[k], tm, CGAL::parameters::vertex_point_map(spm));
       if(walker.walk(from, loc[k].first, b, normal, crossed))
         pieces.back().insert(pieces.back().end(), crossed.begin(), crossed.end());
       else
@@ -290,6 +312,16 @@ polylines_to_chain(TriangleMesh& tm, const PolylineRange& polylines, ChainMap ch
     const auto h = halfedge(s.v, r.v, tm);
     return h.second && is_border_edge(h.first, tm);
   };
+  // a point inside an edge between two points of that edge: the curve runs along the edge, and the point
+  // would only split it
+  auto redundant = [&](const Spot& before, const Spot& s, const Spot& after) {
+    if(s.kind != Spot::EDGE) return false;
+    auto on = [&](const Spot& x) {
+      return x.kind == Spot::VERTEX ? (x.v == source(s.h, tm) || x.v == target(s.h, tm))
+                                    : x.kind == Spot::EDGE && edge(x.h, tm) == edge(s.h, tm);
+    };
+    return on(before) && on(after);
+  };
   auto to_location = [&](const Spot& s) {
     // a face around the spot and the spot's coordinates in it
     typename Traits::halfedge_descriptor h = s.h;
@@ -318,11 +350,19 @@ polylines_to_chain(TriangleMesh& tm, const PolylineRange& polylines, ChainMap ch
       {
         s.v = s.t < 0.5 ? source(s.h, tm) : target(s.h, tm);
         s.kind = Spot::VERTEX;
-        s.p = get(vpm, s.v);
+        s.p = get(spm, s.v);
       }
       if(!parts.back().empty() && same(parts.back().back(), s)) continue;
       if(!parts.back().empty() && along_border(parts.back().back(), s)) parts.emplace_back();
       parts.back().push_back(s);
+      if(parts.back().size() > 2 && redundant(parts.back()[parts.back().size() - 3], parts.back()[parts.back().size() - 2], s))
+        parts.back().erase(parts.back().end() - 2);
+    }
+    auto& loop = parts.front();   // a closed curve: its first point too
+    if(parts.size() == 1 && loop.size() > 3 && same(loop.front(), loop.back()) && redundant(loop[loop.size() - 2], loop[0], loop[1]))
+    {
+      loop.erase(loop.begin());
+      loop.back() = loop.front();
     }
     for(const auto& part : parts)
     {
@@ -332,17 +372,8 @@ polylines_to_chain(TriangleMesh& tm, const PolylineRange& polylines, ChainMap ch
     }
   }
 
-  // ---- the cut; a piece crossing another one inside a face is dropped (a gap of one face)
-  for(;;)
-  {
-    result.cut = conforming_cut(tm, locations, chain, np);
-    if(result.cut || result.cut.error != Conforming_cut_result<TriangleMesh>::CROSSING_SEGMENTS) break;
-    ++result.dropped_crossings;
-    std::vector<Location>& curve = locations[result.cut.curve];
-    std::vector<Location> tail(curve.begin() + std::ptrdiff_t(result.cut.index) + 1, curve.end());
-    curve.resize(result.cut.index + 1);
-    locations.push_back(std::move(tail));
-  }
+  // ---- one cut for all curves; where pieces cross inside a face, the cut puts a vertex
+  result.cut = conforming_cut(tm, locations, chain, np);
   result.curves = locations.size();
   if(!result.cut) result.error = result.cut.message;
   return result;

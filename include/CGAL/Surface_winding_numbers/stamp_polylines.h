@@ -4,7 +4,9 @@
 #ifndef CGAL_SURFACE_WINDING_NUMBERS_STAMP_POLYLINES_H
 #define CGAL_SURFACE_WINDING_NUMBERS_STAMP_POLYLINES_H
 
+#include <CGAL/Surface_winding_numbers/Solve_report.h>
 #include <CGAL/Surface_winding_numbers/internal/surface_walk.h>
+#include <CGAL/Surface_winding_numbers/internal/unit_scale.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -21,10 +23,50 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace CGAL {
 namespace Surface_winding_numbers {
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// `v` divided by its length, computed without overflow or underflow (divided by its largest coordinate
+// first); throws Invalid_input, naming `what`, if `v` is null or not finite.
+template <class Vector_3>
+Vector_3 unit_direction(const Vector_3& v, const std::string& what)
+{
+  const double c[3] = {CGAL::to_double(v.x()), CGAL::to_double(v.y()), CGAL::to_double(v.z())};
+  const double m = (std::max)({std::abs(c[0]), std::abs(c[1]), std::abs(c[2])});
+  if(!std::isfinite(c[0]) || !std::isfinite(c[1]) || !std::isfinite(c[2]) || !(m > 0))
+    throw Invalid_input(what + " is " + (m > 0 || !(m == m) ? "not finite" : "the null vector"));
+  const double u[3] = {c[0] / m, c[1] / m, c[2] / m};
+  const double l = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+  return Vector_3(u[0] / l, u[1] / l, u[2] / l);
+}
+
+// throws Invalid_input, naming the polyline and the point (0-based), if a point of the drawing is not finite
+template <class PolylineRange>
+void check_drawing(const PolylineRange& drawing, const std::string& who)
+{
+  std::size_t c = 0;
+  for(const auto& polyline : drawing)
+  {
+    std::size_t j = 0;
+    for(const auto& p : polyline)
+    {
+      if(!std::isfinite(double(p[0])) || !std::isfinite(double(p[1])))
+        throw Invalid_input(who + ": polyline " + std::to_string(c) + ", point " + std::to_string(j) +
+                            " of the drawing has a coordinate that is not finite");
+      ++j;
+    }
+    ++c;
+  }
+}
+
+} // namespace internal
+/// \endcond
 
 /*!
 \ingroup PkgSurfaceWindingNumbersRef
@@ -55,7 +97,8 @@ is the projection of the `z` axis, or of the `y` axis when `direction` is within
 \tparam TriangleMesh a model of `FaceListGraph` with an internal vertex point map
 \tparam PolylineRange a range of ranges of 2D points given as `std::array<double, 2>` (or anything with
         `p[0]`, `p[1]`)
-\pre `direction` is not the null vector, the drawing has a point and the mesh a vertex.
+\throws Invalid_input if `direction` is the null vector or not finite, a point of the drawing is not finite,
+the drawing has no point, or the mesh has no vertex or an extent that is not finite.
 */
 template <class TriangleMesh, class PolylineRange, class Vector_3>
 Stamp_frame<typename CGAL::Kernel_traits<Vector_3>::Kernel>
@@ -63,7 +106,8 @@ fit_stamp_frame(const TriangleMesh& tm, const PolylineRange& drawing, const Vect
 {
   typedef typename CGAL::Kernel_traits<Vector_3>::Kernel GT;
   typedef typename GT::Point_3 Point_3;
-  const Vector_3 d = direction / std::sqrt(CGAL::to_double(direction.squared_length()));
+  const Vector_3 d = internal::unit_direction(direction, "fit_stamp_frame(): the direction");
+  internal::check_drawing(drawing, "fit_stamp_frame()");
   const Vector_3 z(0, 0, 1), y(0, 1, 0);
   const Vector_3 up = std::abs(CGAL::to_double(d * z)) > std::cos(25. / 180. * 3.141592653589793) ? y : z;
   Vector_3 right = CGAL::cross_product(d, up);
@@ -79,22 +123,26 @@ fit_stamp_frame(const TriangleMesh& tm, const PolylineRange& drawing, const Vect
     const double c[3] = {CGAL::to_double(p * right), CGAL::to_double(p * down), CGAL::to_double(p * d)};
     for(int k = 0; k < 3; ++k) { lo[k] = (std::min)(lo[k], c[k]); hi[k] = (std::max)(hi[k], c[k]); }
   }
+  if(!(lo[0] <= hi[0]) || !std::isfinite(hi[0] - lo[0]) || !std::isfinite(hi[1] - lo[1]) || !std::isfinite(hi[2] - lo[2]))
+    throw Invalid_input("fit_stamp_frame(): the mesh has no vertex, or an extent that is not finite");
+  // halves: no overflow for drawings spanning the whole range of doubles
   double dlo[2] = {inf, inf}, dhi[2] = {-inf, -inf};
   for(const auto& polyline : drawing)
     for(const auto& p : polyline)
-      for(int k = 0; k < 2; ++k) { dlo[k] = (std::min)(dlo[k], double(p[k])); dhi[k] = (std::max)(dhi[k], double(p[k])); }
-  const double w = (std::max)(dhi[0] - dlo[0], 1e-300), h = (std::max)(dhi[1] - dlo[1], 1e-300);
-  const double scale = fill * (std::min)((hi[0] - lo[0]) / w, (hi[1] - lo[1]) / h);
-  const double diagonal = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
-                                    (hi[2] - lo[2]) * (hi[2] - lo[2]));
+      for(int k = 0; k < 2; ++k) { dlo[k] = (std::min)(dlo[k], double(p[k]) / 2); dhi[k] = (std::max)(dhi[k], double(p[k]) / 2); }
+  if(!(dlo[0] <= dhi[0])) throw Invalid_input("fit_stamp_frame(): the drawing has no point");
+  const double w = dhi[0] - dlo[0], h = dhi[1] - dlo[1];   // half the drawing's width and height
+  const double tiny = (std::numeric_limits<double>::min)();
+  const double scale = (std::min)(fill * ((hi[0] - lo[0]) / 2) / (std::max)(w, tiny), fill * ((hi[1] - lo[1]) / 2) / (std::max)(h, tiny));
+  const double diagonal = std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
   // the drawing's centre on the mesh's centre, the plane a diagonal in front of it
-  const Point_3 centre = CGAL::ORIGIN + ((lo[0] + hi[0]) / 2) * right + ((lo[1] + hi[1]) / 2) * down +
-                         ((lo[2] + hi[2]) / 2 - diagonal) * d;
+  const Point_3 centre = CGAL::ORIGIN + (lo[0] / 2 + hi[0] / 2) * right + (lo[1] / 2 + hi[1] / 2) * down +
+                         (lo[2] / 2 + hi[2] / 2 - diagonal) * d;
   Stamp_frame<GT> frame;
   frame.x_axis = scale * right;
   frame.y_axis = scale * down;
   frame.direction = d;
-  frame.origin = centre - ((dlo[0] + dhi[0]) / 2) * frame.x_axis - ((dlo[1] + dhi[1]) / 2) * frame.y_axis;
+  frame.origin = centre - (dlo[0] + dhi[0]) * frame.x_axis - (dlo[1] + dhi[1]) * frame.y_axis;
   return frame;
 }
 
@@ -116,56 +164,111 @@ for `polylines_to_chain()`, and the surface winding numbers close the gaps.
         `p[0]`, `p[1]`)
 \tparam GT a model of `Kernel`, with the point type of the mesh
 \returns the stamped polylines, each a `std::vector` of points of the mesh
+\throws Invalid_input if a point of the drawing is not finite or is placed by `frame` at a point that is not
+finite, the frame's direction is the null vector or not finite, its origin or axes are not finite, a vertex
+of the mesh is not finite, or the divided drawing would have more than \f$ 2^{26} \f$ points. The rays are
+shot at unit scale (the mesh's coordinates multiplied by a power of two), so that a mesh and its copy
+scaled by any power of ten from 1e-150 to 1e150 get the same stamp, up to the scale.
 */
 template <class TriangleMesh, class PolylineRange, class GT>
 std::vector<std::vector<typename GT::Point_3> >
 stamp_polylines(const TriangleMesh& tm, const PolylineRange& drawing, const Stamp_frame<GT>& frame)
 {
   typedef typename GT::Point_3 Point_3;
+  typedef typename GT::Vector_3 Vector_3;
   typedef typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type VPM;
-  typedef CGAL::AABB_face_graph_triangle_primitive<TriangleMesh, VPM> Primitive;
-  typedef CGAL::AABB_tree<CGAL::AABB_traits<GT, Primitive> > Tree;
   namespace PMP = CGAL::Polygon_mesh_processing;
 
+  // bad input first
+  internal::check_drawing(drawing, "stamp_polylines()");
+  const Vector_3 direction = internal::unit_direction(frame.direction, "stamp_polylines(): the frame's direction");
+  for(const Vector_3& v : {frame.origin - CGAL::ORIGIN, frame.x_axis, frame.y_axis})
+    if(!std::isfinite(CGAL::to_double(v.x())) || !std::isfinite(CGAL::to_double(v.y())) || !std::isfinite(CGAL::to_double(v.z())))
+      throw Invalid_input("stamp_polylines(): the frame's origin or axes are not finite");
   std::vector<std::vector<Point_3> > result;
   if(faces(tm).empty()) return result;
-  Tree tree;
-  PMP::build_AABB_tree(tm, tree);
   const VPM vpm = get(CGAL::vertex_point, tm);
-  const double mean_edge = internal::mean_edge_length(tm, vpm);
-  const double step = mean_edge / 2;
+  bool finite = true;
+  const double unit = internal::mesh_unit_scale(tm, vpm, finite);
+  if(!finite) throw Invalid_input("stamp_polylines(): a vertex of the mesh has a coordinate that is not finite");
 
+  // everything below at unit scale (the queries of the AABB tree square lengths), back to the input's scale
+  // at the end
+  typedef internal::Scaled_point_map<VPM, Point_3> SPM;
+  const SPM spm{vpm, unit};
+  typedef CGAL::AABB_face_graph_triangle_primitive<TriangleMesh, SPM> Primitive;
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<GT, Primitive> > Tree;
+  Tree tree;
+  PMP::build_AABB_tree(tm, tree, CGAL::parameters::vertex_point_map(spm));
+  const double mean_edge = internal::mean_edge_length(tm, spm);
+  const double step = mean_edge / 2;
+  auto in_space = [&](const auto& p) {   // unit scale; not finite where the drawing is too large for the frame
+    const Vector_3 x = double(p[0]) * frame.x_axis + double(p[1]) * frame.y_axis;
+    return CGAL::ORIGIN + unit * ((frame.origin - CGAL::ORIGIN) + x);
+  };
+  auto finite_point = [](const Point_3& p) {
+    return std::isfinite(CGAL::to_double(p.x())) && std::isfinite(CGAL::to_double(p.y())) && std::isfinite(CGAL::to_double(p.z()));
+  };
+
+  // the drawing's points in space, segments divided; at most `max_points` in all (a drawing far larger
+  // than the mesh, or a mesh with degenerate edges, is refused rather than run without bound)
+  const std::size_t max_points = std::size_t(1) << 26;
+  std::vector<std::vector<Point_3> > dense_polylines;
+  std::size_t total = 0;
+  std::size_t c = 0;
   for(const auto& polyline : drawing)
   {
-    // the drawing's points in space, segments divided
     std::vector<Point_3> in;
-    for(const auto& p : polyline) in.push_back(frame.origin + double(p[0]) * frame.x_axis + double(p[1]) * frame.y_axis);
+    for(const auto& p : polyline)
+    {
+      in.push_back(in_space(p));
+      if(!finite_point(in.back()))
+        throw Invalid_input("stamp_polylines(): polyline " + std::to_string(c) + ", point " + std::to_string(in.size() - 1) +
+                            " of the drawing is placed at a point that is not finite (drawing too large for its frame)");
+    }
+    ++c;
+    dense_polylines.emplace_back();
     if(in.empty()) continue;
-    std::vector<Point_3> dense{in.front()};
+    std::vector<Point_3>& dense = dense_polylines.back();
+    dense.push_back(in.front());
     for(std::size_t i = 0; i + 1 < in.size(); ++i)
     {
-      const double length = std::sqrt(CGAL::to_double(CGAL::squared_distance(in[i], in[i + 1])));
-      const std::size_t n = std::size_t(std::ceil(length / step));
+      const double pieces = internal::length(in[i + 1] - in[i]) / step;
+      if(!(pieces <= double(max_points - total)))
+        throw Invalid_input("stamp_polylines(): the drawing, divided into pieces of half the mean edge length of the "
+                            "mesh, would have more than " + std::to_string(max_points) + " points");
+      const std::size_t n = std::size_t(std::ceil(pieces));
       for(std::size_t k = 1; k < n; ++k) dense.push_back(in[i] + (double(k) / double(n)) * (in[i + 1] - in[i]));
       dense.push_back(in[i + 1]);
+      total += n;
     }
+  }
+
+  c = 0;
+  for(const auto& polyline : drawing)
+  {
+    const std::vector<Point_3>& dense = dense_polylines[c++];
+    if(dense.empty()) continue;
+    std::vector<Point_3> in;
+    for(const auto& p : polyline) in.push_back(in_space(p));
     const bool closed = in.size() > 2 && in.front() == in.back();
     // the hits; a miss, or a jump to another layer of the surface, breaks the polyline
     std::vector<std::vector<Point_3> > pieces(1);
     bool missed = false, first_missed = false;
     for(std::size_t i = 0; i < dense.size(); ++i)
     {
-      const auto loc = PMP::locate_with_AABB_tree(typename GT::Ray_3(dense[i], frame.direction), tree, tm);
+      const auto loc = PMP::locate_with_AABB_tree(typename GT::Ray_3(dense[i], direction), tree, tm,
+                                                  CGAL::parameters::vertex_point_map(spm));
       bool hit = loc.first != boost::graph_traits<TriangleMesh>::null_face();
       if(hit)   // a face seen from its back (through a hole, the inside of the surface) is a miss
       {
         const auto g = halfedge(loc.first, tm);
-        const Point_3 &a = get(vpm, source(g, tm)), &b = get(vpm, target(g, tm)), &c = get(vpm, target(next(g, tm), tm));
-        hit = CGAL::to_double(CGAL::cross_product(b - a, c - a) * frame.direction) < 0;
+        const Point_3 &a = get(spm, source(g, tm)), &b = get(spm, target(g, tm)), &d = get(spm, target(next(g, tm), tm));
+        hit = CGAL::to_double(CGAL::cross_product(b - a, d - a) * direction) < 0;
       }
-      const Point_3 q = hit ? PMP::construct_point(loc, tm) : dense[i];
+      const Point_3 q = hit ? PMP::construct_point(loc, tm, CGAL::parameters::vertex_point_map(vpm)) : dense[i];
       const bool jump = hit && !pieces.back().empty() &&
-                        CGAL::to_double(CGAL::squared_distance(pieces.back().back(), q)) > 16 * mean_edge * mean_edge;
+                        internal::length(pieces.back().back() - q) * unit > 4 * mean_edge;
       if(!hit || jump)
       {
         missed = true;

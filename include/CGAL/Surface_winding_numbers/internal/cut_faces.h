@@ -25,14 +25,94 @@ namespace CGAL {
 namespace Surface_winding_numbers {
 namespace internal {
 
-// angle at a of the triangle abc
+// Barycentric coordinates closer than this to 0 are 0, points on an edge closer than this (relative to its
+// length) are one point, and so are crossings on a chord.
+constexpr double cut_snap_tolerance = 1e-9;
+
+// A chord of a face: from vertex a to vertex b on its border, through the crossings `inner` (indices of
+// crossings of the face) in order.
+template <class Vertex>
+struct Face_chord
+{
+  Vertex a, b;
+  std::vector<std::size_t> inner;
+};
+
+// Where the chords p0 p1 and q0 q1 of a triangle cross (points in barycentric coordinates, whose ends
+// interleave around the triangle): p0 + t (p1 - p0) = q0 + u (q1 - q0), with t and u kept at least the
+// snapping tolerance away from the ends (the crossing of two chords is inside the triangle).
+inline void chord_crossing(const std::array<double, 3>& p0, const std::array<double, 3>& p1,
+                           const std::array<double, 3>& q0, const std::array<double, 3>& q1, double& t, double& u)
+{
+  // in the affine coordinates 1 and 2
+  const double a = p1[1] - p0[1], b = -(q1[1] - q0[1]), c = p1[2] - p0[2], d = -(q1[2] - q0[2]);
+  const double r = q0[1] - p0[1], s = q0[2] - p0[2];
+  const double det = a * d - b * c;
+  t = (r * d - b * s) / det;
+  u = (a * s - c * r) / det;
+  auto clamp = [](double x) {
+    return x == x ? (std::min)(1 - cut_snap_tolerance, (std::max)(cut_snap_tolerance, x)) : 0.5;
+  };
+  t = clamp(t);
+  u = clamp(u);
+}
+
+// The crossings of the chords of a face, given by their ends in barycentric coordinates (`from`, `to`) and
+// by the positions of their ends around the face (`range`, ordered pairs): two chords cross where their
+// ends interleave. Fills, for each chord, its crossings (parameter from `from`, index into `inner`) in
+// order along it, and the barycentric coordinates of every crossing in `inner`. A crossing closer than the
+// snapping tolerance along a chord to one already on it is that one (three chords or more through a point).
+template <class Position>
+void chord_crossings(const std::vector<std::pair<Position, Position> >& range, const std::vector<std::array<double, 3> >& from,
+                     const std::vector<std::array<double, 3> >& to,
+                     std::vector<std::vector<std::pair<double, std::size_t> > >& crossings,
+                     std::vector<std::array<double, 3> >& inner)
+{
+  const std::size_t n = range.size(), none = std::size_t(-1);
+  crossings.assign(n, {});
+  for(std::size_t i = 0; i < n; ++i)
+    for(std::size_t j = i + 1; j < n; ++j)
+    {
+      const auto &r = range[i], &q = range[j];
+      if(!((r.first < q.first && q.first < r.second && r.second < q.second) ||
+           (q.first < r.first && r.first < q.second && q.second < r.second)))
+        continue;   // the ends do not interleave around the face: no crossing
+      double t, u;
+      chord_crossing(from[i], to[i], from[j], to[j], t, u);
+      std::size_t x = none;
+      for(const auto& c : crossings[i]) if(std::abs(c.first - t) <= cut_snap_tolerance) x = c.second;
+      for(const auto& c : crossings[j]) if(x == none && std::abs(c.first - u) <= cut_snap_tolerance) x = c.second;
+      if(x == none)
+      {
+        x = inner.size();
+        inner.push_back({from[i][0] + t * (to[i][0] - from[i][0]), from[i][1] + t * (to[i][1] - from[i][1]),
+                         from[i][2] + t * (to[i][2] - from[i][2])});
+      }
+      for(auto [c, param] : {std::make_pair(i, t), std::make_pair(j, u)})
+      {
+        bool known = false;
+        for(const auto& k : crossings[c]) known = known || k.second == x;
+        if(!known) crossings[c].emplace_back(param, x);
+      }
+    }
+  for(auto& c : crossings) std::sort(c.begin(), c.end());
+}
+
+// angle at a of the triangle abc (the sides divided by their largest coordinate: no underflow or
+// overflow at any scale)
 template <class Point>
 double corner_angle(const Point& a, const Point& b, const Point& c)
 {
-  const double u[3] = {CGAL::to_double(b.x()) - CGAL::to_double(a.x()), CGAL::to_double(b.y()) - CGAL::to_double(a.y()),
-                       CGAL::to_double(b.z()) - CGAL::to_double(a.z())};
-  const double w[3] = {CGAL::to_double(c.x()) - CGAL::to_double(a.x()), CGAL::to_double(c.y()) - CGAL::to_double(a.y()),
-                       CGAL::to_double(c.z()) - CGAL::to_double(a.z())};
+  double u[3] = {CGAL::to_double(b.x()) - CGAL::to_double(a.x()), CGAL::to_double(b.y()) - CGAL::to_double(a.y()),
+                 CGAL::to_double(b.z()) - CGAL::to_double(a.z())};
+  double w[3] = {CGAL::to_double(c.x()) - CGAL::to_double(a.x()), CGAL::to_double(c.y()) - CGAL::to_double(a.y()),
+                 CGAL::to_double(c.z()) - CGAL::to_double(a.z())};
+  for(double* v : {u, w})
+  {
+    const double m = (std::max)({std::abs(v[0]), std::abs(v[1]), std::abs(v[2])});
+    if(m > 0)
+      for(int k = 0; k < 3; ++k) v[k] /= m;
+  }
   const double x[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
   return std::atan2(std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]), u[0] * w[0] + u[1] * w[1] + u[2] * w[2]);
 }
@@ -51,7 +131,10 @@ face_loop(typename boost::graph_traits<TriangleMesh>::face_descriptor f, const T
 
   Before the call `f` is a triangle of the input with corners `corner[0..2]` (counter-clockwise) whose
   sides may carry vertices inserted by the cut: a convex polygon, some of whose vertices are collinear.
-  The chords join two vertices of `f` that are not on a common side; they do not cross.
+  The chords join two vertices of `f` that are not on a common side; where two of them cross they go
+  through a crossing (`inner` of the chord): the first chord through a crossing inserts its vertex
+  (`inner_vertex`, at the barycentric coordinates `inner` with respect to the corners), the others go
+  through it. Every piece stays convex.
 
   `line` (halfedge -> int) tells on which straight line each side of a piece lies: the three sides of the
   triangle get 0, 1, 2, every chord and every diagonal a new number from `next_line`. A vertex of a piece is
@@ -65,14 +148,26 @@ template <class TriangleMesh, class VertexPointMap, class LineMap, class OriginM
 void cut_and_triangulate_face(
   TriangleMesh& tm, VertexPointMap vpm, typename boost::graph_traits<TriangleMesh>::face_descriptor f,
   const std::array<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, 3>& corner,
-  const std::vector<std::pair<typename boost::graph_traits<TriangleMesh>::vertex_descriptor,
-                              typename boost::graph_traits<TriangleMesh>::vertex_descriptor> >& chords,
+  const std::vector<Face_chord<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> >& chords,
+  const std::vector<std::array<double, 3> >& inner,
+  std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& inner_vertex,
   typename boost::graph_traits<TriangleMesh>::vertex_descriptor keep, LineMap line, int& next_line, OriginMap origin)
 {
   typedef boost::graph_traits<TriangleMesh> Traits;
   typedef typename Traits::halfedge_descriptor halfedge_descriptor;
   typedef typename Traits::vertex_descriptor vertex_descriptor;
   typedef typename Traits::face_descriptor face_descriptor;
+  typedef typename boost::property_traits<VertexPointMap>::value_type Point;
+  auto inner_point = [&](const std::array<double, 3>& b) {   // a combination of the corners
+    double xyz[3] = {0., 0., 0.};
+    for(int k = 0; k < 3; ++k)
+    {
+      const Point& c = get(vpm, corner[k]);
+      for(int i = 0; i < 3; ++i) xyz[i] += b[k] * CGAL::to_double(c[i]);
+    }
+    return Point(xyz[0], xyz[1], xyz[2]);
+  };
+  inner_vertex.assign(inner.size(), Traits::null_vertex());
 
   // the sides of the triangle
   std::vector<halfedge_descriptor> loop = face_loop(f, tm);
@@ -85,11 +180,9 @@ void cut_and_triangulate_face(
     if(target(g, tm) == corner[(side + 1) % 3]) ++side;
   }
 
-  // the chords split f into pieces
+  // splits the piece that has u and v on its border along uv (nothing if uv is a side of it), on `chord_line`
   std::vector<face_descriptor> pieces(1, f);
-  for(const auto& chord : chords)
-  {
-    const vertex_descriptor u = chord.first, v = chord.second;
+  auto split_piece = [&](vertex_descriptor u, vertex_descriptor v, int chord_line) {
     halfedge_descriptor hu = Traits::null_halfedge(), hv = Traits::null_halfedge();
     face_descriptor piece = Traits::null_face();
     for(face_descriptor p : pieces)
@@ -104,7 +197,7 @@ void cut_and_triangulate_face(
     }
     CGAL_assertion(piece != Traits::null_face());
     if(piece == Traits::null_face() || target(next(hu, tm), tm) == v || target(next(hv, tm), tm) == u)
-      continue;   // already an edge of the piece
+      return;   // already an edge of the piece
     // split_face(h1, h2) leaves face(h1) the part from target(h2) to target(h1): f keeps `keep`
     bool keep_on_v_to_u = (v == keep);
     for(halfedge_descriptor g = next(hv, tm); !keep_on_v_to_u; g = next(g, tm))
@@ -114,11 +207,37 @@ void cut_and_triangulate_face(
     }
     const bool swap = (piece == f && !keep_on_v_to_u);
     const halfedge_descriptor h = CGAL::Euler::split_face(swap ? hv : hu, swap ? hu : hv, tm);
-    put(line, h, next_line);
-    put(line, opposite(h, tm), next_line);
-    ++next_line;
+    put(line, h, chord_line);
+    put(line, opposite(h, tm), chord_line);
     put(origin, face(opposite(h, tm), tm), f);
     pieces.push_back(face(opposite(h, tm), tm));
+  };
+  // the chords split f into pieces
+  for(const auto& chord : chords)
+  {
+    const int chord_line = next_line++;
+    std::vector<vertex_descriptor> path{chord.a};
+    for(std::size_t x : chord.inner) path.push_back(inner_vertex[x]);
+    path.push_back(chord.b);
+    for(std::size_t i = 0; i + 1 < path.size();)
+    {
+      std::size_t j = i + 1;   // the next vertex of the chord that is already in the mesh
+      while(path[j] == Traits::null_vertex()) ++j;
+      split_piece(path[i], path[j], chord_line);
+      // the crossings between them, inserted on the new edge from path[i]
+      vertex_descriptor from = path[i];
+      for(std::size_t k = i + 1; k < j; ++k)
+      {
+        const halfedge_descriptor h = halfedge(from, path[j], tm).first;
+        const halfedge_descriptor hnew = CGAL::Euler::split_edge(h, tm);   // hnew: from -> new, h: new -> path[j]
+        inner_vertex[chord.inner[k - 1]] = path[k] = target(hnew, tm);
+        put(vpm, path[k], inner_point(inner[chord.inner[k - 1]]));
+        put(line, hnew, chord_line);
+        put(line, opposite(hnew, tm), chord_line);
+        from = path[k];
+      }
+      i = j;
+    }
   }
 
   // ears

@@ -7,6 +7,8 @@
 #ifndef CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_SURFACE_WALK_H
 #define CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_SURFACE_WALK_H
 
+#include <CGAL/Surface_winding_numbers/internal/unit_scale.h>
+
 #include <CGAL/Kernel/global_functions.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -24,15 +26,63 @@ namespace CGAL {
 namespace Surface_winding_numbers {
 namespace internal {
 
+// the length of a vector, without overflow or underflow of its square
+template <class Vector>
+double length(const Vector& v)
+{
+  return std::hypot(CGAL::to_double(v.x()), CGAL::to_double(v.y()), CGAL::to_double(v.z()));
+}
+
 // the mean length of the edges of tm
 template <class TriangleMesh, class VertexPointMap>
 double mean_edge_length(const TriangleMesh& tm, VertexPointMap vpm)
 {
   double sum = 0;
-  for(auto e : edges(tm))
-    sum += std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, source(e, tm)), get(vpm, target(e, tm)))));
+  for(auto e : edges(tm)) sum += length(get(vpm, target(e, tm)) - get(vpm, source(e, tm)));
   return num_edges(tm) == 0 ? 0. : sum / double(num_edges(tm));
 }
+
+// The unit scale (unit_scale()) of the vertex points of `g` read through `vpm`; `finite` tells whether
+// every coordinate is finite.
+template <class Graph, class VertexPointMap>
+double mesh_unit_scale(const Graph& g, VertexPointMap vpm, bool& finite)
+{
+  std::vector<double> xyz;
+  xyz.reserve(3 * num_vertices(g));
+  finite = true;
+  for(auto v : vertices(g))
+  {
+    const auto& p = get(vpm, v);
+    for(double x : {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())})
+    {
+      finite = finite && std::isfinite(x);
+      xyz.push_back(x);
+    }
+  }
+  return unit_scale(xyz.data(), xyz.size() / 3);
+}
+
+// The vertex points of a vertex point map multiplied by `scale` (a power of two: exact), as a readable
+// property map: the geometric queries (AABB trees, closest points, rays, walks) run on it at unit scale,
+// where squared lengths neither overflow nor underflow, and their answers (faces, barycentric
+// coordinates) are those of the input.
+template <class VertexPointMap, class Point>
+struct Scaled_point_map
+{
+  typedef typename boost::property_traits<VertexPointMap>::key_type key_type;
+  typedef Point value_type;
+  typedef Point reference;
+  typedef boost::readable_property_map_tag category;
+
+  VertexPointMap vpm;
+  double scale = 1.;
+
+  friend Point get(const Scaled_point_map& m, const key_type& k)
+  {
+    const auto& p = get(m.vpm, k);
+    return Point(m.scale * CGAL::to_double(p.x()), m.scale * CGAL::to_double(p.y()), m.scale * CGAL::to_double(p.z()));
+  }
+};
 
 // A point of the surface: a vertex, a point on an edge (at `t` from source(h) to target(h), 0 < t < 1)
 // or a point inside a face.
@@ -61,6 +111,9 @@ class Surface_walk
 
 public:
   typedef Surface_spot<TriangleMesh, Point> Spot;
+  // barycentric coordinates below this are zero, and vertices closer than this times the mean edge length
+  // to a walk's plane are on it
+  static constexpr double snap_tolerance = 1e-9;
 
   Surface_walk(const TriangleMesh& tm, VertexPointMap vpm, double scale) : tm_(tm), vpm_(vpm), scale_(scale) {}
 
@@ -75,7 +128,8 @@ public:
     return l > 0 ? n / l : n;
   }
 
-  // the spot of a face location (a vertex or an edge point if coordinates are zero)
+  // the spot of a face location: a vertex or an edge point if coordinates are zero, or below
+  // `snap_tolerance` (relative to the face: the point is then on its border up to rounding)
   template <class Location>
   Spot spot(const Location& loc) const
   {
@@ -84,21 +138,26 @@ public:
     const halfedge_descriptor h0 = halfedge(s.f, tm_);
     const std::array<halfedge_descriptor, 3> hs = {h0, next(h0, tm_), next(next(h0, tm_), tm_)};
     int zeros = 0, nonzero = 0, zero = 0;
+    std::array<double, 3> w;
     for(int k = 0; k < 3; ++k)
     {
-      if(loc.second[k] == 0) { ++zeros; zero = k; }
+      w[k] = double(loc.second[k]);
+      if(!(w[k] > snap_tolerance)) { ++zeros; zero = k; w[k] = 0; }
       else nonzero = k;
     }
+    if(zeros == 3) { zeros = 0; w = {double(loc.second[0]), double(loc.second[1]), double(loc.second[2])}; }
+    const double total = w[0] + w[1] + w[2];
+    for(double& x : w) x /= total;
     s.p = CGAL::ORIGIN;
     Vector sum = NULL_VECTOR;
-    for(int k = 0; k < 3; ++k) sum = sum + double(loc.second[k]) * (point(source(hs[k], tm_)) - CGAL::ORIGIN);
+    for(int k = 0; k < 3; ++k) sum = sum + w[k] * (point(source(hs[k], tm_)) - CGAL::ORIGIN);
     s.p = CGAL::ORIGIN + sum;
     if(zeros == 2) { s.kind = Spot::VERTEX; s.v = source(hs[nonzero], tm_); s.p = point(s.v); }
     else if(zeros == 1)
     {
       s.kind = Spot::EDGE;
       s.h = hs[(zero + 1) % 3];   // the side opposite to vertex `zero`, from vertex zero+1 to vertex zero+2
-      s.t = double(loc.second[(zero + 2) % 3]);
+      s.t = w[(zero + 2) % 3];
     }
     return s;
   }
@@ -133,7 +192,12 @@ public:
     m = m / lm;
     const double reach = 2 * ld + 4 * scale_;
     const double tiny = 1e-9 * ld * scale_;   // progress lost to rounding when a point is on an edge
-    auto side = [&](vertex_descriptor v) { return CGAL::to_double((point(v) - a) * m); };
+    // vertices closer to the plane than rounding are on it: the walk goes through them, and along the
+    // edges that lie in the plane
+    auto side = [&](vertex_descriptor v) {
+      const double x = CGAL::to_double((point(v) - a) * m);
+      return std::abs(x) <= snap_tolerance * scale_ ? 0. : x;
+    };
     Spot x = from;
     face_descriptor previous = Traits::null_face();
     const std::size_t max_steps = num_faces(tm_) + 2;
@@ -185,7 +249,6 @@ private:
       if(su == 0)
       {
         if(x.kind == Spot::VERTEX && x.v == u) continue;
-        if(x.kind == Spot::EDGE && (u == source(x.h, tm_) || u == target(x.h, tm_))) continue;
         Spot s;
         s.kind = Spot::VERTEX;
         s.v = u;
