@@ -101,8 +101,10 @@ TEST(Svg, UnsupportedElementsWarnCurvesAndTransformsAreErrors)
   EXPECT_NE(error_of("<svg><path d=\"M0 0 L1 1\"").find("bad.svg:1: unterminated"), std::string::npos);
   EXPECT_NE(error_of("<svg>\n<path d=\"m 1e308 0 1e308 0 l 1 1\"/></svg>").find("bad.svg:2: the path's coordinates add up to a number that is not finite"),
             std::string::npos) << "relative moves that overflow";
-  EXPECT_NE(error_of("<svg>\n<line x1=\"-1e308\" x2=\"1e308\"/></svg>").find("bad.svg:2: the drawing's extent is not a finite number"),
+  EXPECT_NE(error_of("<svg>\n<line x1=\"-1e308\" x2=\"1e308\"/></svg>").find("bad.svg:2: the drawing's extent or centre is not a finite number"),
             std::string::npos);
+  EXPECT_NE(error_of("<svg>\n\n<path d=\"M 1e308 0 l 0e308 0\"/></svg>").find("bad.svg:3: the drawing's extent or centre is not"),
+            std::string::npos) << "found by swn_fuzz_svg: a point drawing at 1e308 (its centre overflows when the stamp places it)";
 }
 
 } // namespace

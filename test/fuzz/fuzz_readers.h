@@ -1,41 +1,54 @@
 // The input the fuzzers feed to the swn tool's readers (test/fuzz): bytes read as a mesh in one format
 // (OFF, OBJ, PLY, STL; an OBJ's `l` records as its curve) or as a curve file on a fixed mesh, then cut
-// so that the curve lies on edges, as the tool does before solving. Every outcome but "read" or
-// "Input_error" is a defect: another exception, a crash, a hang, a sanitizer report.
+// so that the curve lies on edges, as the tool does before solving; or read as curves off the mesh (OBJ
+// polylines, an SVG drawing stamped along -z) and put on a fixed unit grid by the library; or read by
+// the soup route (an OBJ file with its `l`/`c` curves, solved as a polygon soup when it is not an oriented
+// 2-manifold triangle mesh); or read as a mesh onto which a fixed stroke and a fixed drawing are put
+// (meshes of any size). Every outcome but "read" or "Input_error" is a defect: another exception, a
+// crash, a hang, a sanitizer report.
 
 #ifndef SWN_FUZZ_READERS_H
 #define SWN_FUZZ_READERS_H
 
-#include "swn_io/conforming_cut.h"
-#include "swn_io/read_curves.h"
-#include "swn_io/read_mesh.h"
+// The readers and the library are compiled once, in fuzz_readers.cpp (with the fuzzers' coverage
+// instrumentation in the libFuzzer build); this header is all a fuzzer's entry point needs.
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Surface_mesh.h>
-
-#include <cstddef>
-#include <cstdint>
-#include <sstream>
+#include <algorithm>
+#include <cctype>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace swn_fuzz {
 
-namespace SIO = CGAL::Surface_winding_numbers::IO;
-typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_3 Point;
-typedef CGAL::Surface_mesh<Point> Mesh;
-
-// what the readers can be asked to read: the four mesh formats, and curve files
+// what the readers can be asked to read: the four mesh formats, curve files, curves off the mesh (OBJ
+// polylines, SVG drawings), the soup route, meshes with curves off them
 inline const std::vector<std::string>& formats()
 {
-  static const std::vector<std::string> f = {"obj", "off", "ply", "stl", "curve"};
+  static const std::vector<std::string> f = {"obj", "off", "ply", "stl", "curve", "polylines", "svg", "soup", "offmesh"};
   return f;
 }
 
-// the format of a corpus file, from its extension (.txt: a curve file); "" if none applies
+// the file name ending of a format: curve files are .txt; polylines, soup and offmesh are OBJ files
+// named X.polylines.obj, X.soup.obj, X.offmesh.obj
+inline std::string extension_of(const std::string& format)
+{
+  if(format == "curve") return "txt";
+  if(format == "polylines" || format == "soup" || format == "offmesh") return format + ".obj";
+  return format;
+}
+
+// the format of a corpus file, from its name's ending; "" if none applies
 inline std::string format_of(const std::string& filename)
 {
-  const std::string ext = SIO::mesh_file_format(filename);
+  auto ends_with = [&](const std::string& e) {
+    return filename.size() > e.size() + 1 && filename.compare(filename.size() - e.size() - 1, std::string::npos, "." + e) == 0;
+  };
+  for(const char* f : {"polylines", "soup", "offmesh"})
+    if(ends_with(extension_of(f))) return f;
+  const std::size_t dot = filename.find_last_of("./");
+  std::string ext = dot == std::string::npos || filename[dot] != '.' ? std::string() : filename.substr(dot + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
   if(ext == "txt") return "curve";
   for(const std::string& f : formats())
     if(f == ext) return f;
@@ -44,42 +57,16 @@ inline std::string format_of(const std::string& filename)
 
 enum class Outcome { READ, INPUT_ERROR };
 
-// Reads `data` in `format`; curve files refer to `curve_mesh`. Returns READ or INPUT_ERROR; any other
-// exception passes to the caller (a defect).
-inline Outcome read_input(const std::string& data, const std::string& format, const Mesh& curve_mesh)
-{
-  try
-  {
-    std::istringstream is(data, std::ios::in | std::ios::binary);
-    std::vector<SIO::Curve_set> curves;
-    if(format == "curve")
-    {
-      curves.push_back(SIO::read_curves(is, "fuzz.txt", curve_mesh));
-      SIO::conforming_cut(curve_mesh, curves);
-      return Outcome::READ;
-    }
-    Mesh mesh;
-    const SIO::Mesh_read_info info = SIO::read_mesh(is, format, "fuzz." + format, mesh);
-    if(SIO::has_curve_records(info))
-    {
-      curves.push_back(SIO::curve_set_from_obj(info, mesh));
-      SIO::conforming_cut(mesh, curves);
-    }
-    return Outcome::READ;
-  }
-  catch(const SIO::Input_error&)
-  {
-    return Outcome::INPUT_ERROR;
-  }
-}
+// the fixed meshes: curve files refer to the 4 x 4 grid of test/data/grid4.off (the malformed corpus's
+// too); curves off the mesh go onto a 10 x 10 grid of the unit square (the reproducers' grid10.obj)
+struct Fixed_meshes;
 
-// the fixed mesh of curve files: the 4 x 4 grid of test/data/grid4.off (the malformed corpus's too)
-inline Mesh grid_mesh(const std::string& path)
-{
-  Mesh m;
-  SIO::read_mesh(path, m);
-  return m;
-}
+// the fixed meshes, the grid read from `grid_path`
+std::shared_ptr<const Fixed_meshes> fixed_meshes(const std::string& grid_path);
+
+// Reads `data` in `format`; curve files refer to `meshes`' grid, curves off the mesh go onto its unit
+// grid. Returns READ or INPUT_ERROR; any other exception passes to the caller (a defect).
+Outcome read_input(const std::string& data, const std::string& format, const Fixed_meshes& meshes);
 
 } // namespace swn_fuzz
 

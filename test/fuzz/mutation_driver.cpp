@@ -3,8 +3,9 @@
 //
 //   swn_fuzz_driver --grid GRID.off [--seed S] [--runs N] [--seconds T] CORPUS_DIR...
 //
-// Reads every corpus file whose format is known from its extension (.obj .off .ply .stl, .txt: a curve
-// file on GRID), checks it, then mutates the files round robin with a fixed-seed generator (bit flips,
+// Reads every corpus file whose format is known from its name's ending (.obj .off .ply .stl, .txt: a curve
+// file on GRID; .polylines.obj, .svg: curves off the mesh on a unit grid; .soup.obj: the soup route;
+// .offmesh.obj: a mesh with a fixed stroke and drawing; see fuzz_readers.h), checks it, then mutates the files round robin with a fixed-seed generator (bit flips,
 // bytes and tokens replaced, inserted, deleted, duplicated; lines spliced from another file of the same
 // format) until N runs or T seconds; files over 4 KB are read once, not mutated. Every input must be read or refused with an Input_error: another
 // exception is reported with the run number and the input is written to swn-fuzz-failure.FORMAT; a crash
@@ -64,7 +65,8 @@ const std::string interesting[] = {
   "/", "//", "v ", "f ", "l ", "e ", "c ", "h ", "vt ", "element ", "property ", "list ", "uchar ", "int ",
   "float ", "double ", "end_header\n", "format binary_little_endian 1.0\n", "format ascii 1.0\n", "solid ",
   "facet normal 0 0 0\n", "vertex ", "endloop\n", "endfacet\n", "endsolid\n", "OFF\n", "# swn polylines\n",
-  "# swn halfedges\n", "\xEF\xBB\xBF", std::string(1, '\0')};
+  "# swn halfedges\n", "\xEF\xBB\xBF", std::string(1, '\0'), "<svg>", "<path d=\"", "\"/>", "<polygon points=\"",
+  "<line x1=\"", "M ", "m ", "L ", "l ", "H ", "V ", "Z", "z", ",", "'", "\"", "<!--", "-->", ">", "<"};
 
 class Mutator
 {
@@ -171,7 +173,7 @@ int main(int argc, char** argv)
   std::vector<std::size_t> small;   // the seeds that are mutated
   for(std::size_t k = 0; k < corpus.size(); ++k) if(corpus[k].data.size() <= max_mutated_size) small.push_back(k);
   if(small.empty()) return usage("no corpus file with a known extension and at most 4 KB");
-  const swn_fuzz::Mesh grid = swn_fuzz::grid_mesh(grid_path);
+  const auto meshes = swn_fuzz::fixed_meshes(grid_path);
   for(int sig : {SIGSEGV, SIGABRT, SIGFPE, SIGBUS, SIGILL}) std::signal(sig, write_input_and_reraise);
   std::ostringstream quiet;   // CGAL's binary readers print their complaints on std::cerr: kept out
   std::cerr.rdbuf(quiet.rdbuf());
@@ -194,19 +196,19 @@ int main(int argc, char** argv)
       for(std::size_t k : small) if(corpus[k].format == s.format) same.push_back(k);
       mutator.mutate(input, corpus[same[mutator.below(same.size())]].data);
     }
-    std::snprintf(crash_file, sizeof(crash_file), "swn-fuzz-crash.%s", s.format == "curve" ? "txt" : s.format.c_str());
+    std::snprintf(crash_file, sizeof(crash_file), "swn-fuzz-crash.%s", swn_fuzz::extension_of(s.format).c_str());
     current_data = input.data();
     current_size = input.size();
     Counts& c = counts[s.format];
     ++c.runs;
     try
     {
-      (swn_fuzz::read_input(input, s.format, grid) == swn_fuzz::Outcome::READ ? c.read : c.refused)++;
+      (swn_fuzz::read_input(input, s.format, *meshes) == swn_fuzz::Outcome::READ ? c.read : c.refused)++;
     }
     catch(const std::exception& e)
     {
       ++failures;
-      const std::string file = std::string("swn-fuzz-failure.") + (s.format == "curve" ? "txt" : s.format);
+      const std::string file = "swn-fuzz-failure." + swn_fuzz::extension_of(s.format);
       std::ofstream(file, std::ios::binary) << input;
       std::cout << "FAILURE: run " << run << " (seed " << seed << ", mutant of " << s.name << "): " << e.what()
                 << " (not an Input_error; input written to " << file << ")\n";

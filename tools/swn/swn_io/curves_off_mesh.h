@@ -19,6 +19,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstddef>
+#include <exception>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -217,7 +218,14 @@ std::vector<Off_mesh_report> add_off_mesh_curves(Cut_result<Point>& cut, const O
     const auto& d = curves.direction;
     auto stamp = [&](double sign) {
       const typename K::Vector_3 v(sign * d[0], sign * d[1], sign * d[2]);
-      return stamp_polylines(mesh, curves.drawing.polylines, fit_stamp_frame(mesh, curves.drawing.polylines, v));
+      try
+      {
+        return stamp_polylines(mesh, curves.drawing.polylines, fit_stamp_frame(mesh, curves.drawing.polylines, v));
+      }
+      catch(const std::exception& e)   // the library refuses the drawing (Invalid_input): say which file
+      {
+        throw Input_error(curves.stamp_file, 0, e.what());
+      }
     };
     const auto stamped = stamp(1);
     std::ostringstream direction;

@@ -307,7 +307,7 @@ inline Svg_drawing read_svg_polylines(std::istream& is, const std::string& file)
                                                      "(only path, polyline, polygon and line)"));
   }
   if(drawing.polylines.empty()) throw Input_error(file, 0, "no polyline in the SVG file (path, polyline, polygon or line)");
-  // the drawing's extent must be finite, for the stamp to scale it (coordinates near +-1e308 overflow)
+  // the drawing's extent and centre must be finite, for the stamp to place it (coordinates near +-1e308 overflow)
   std::array<double, 2> lo = drawing.polylines[0][0], hi = lo;
   for(std::size_t k = 0; k < drawing.polylines.size(); ++k)
     for(const auto& q : drawing.polylines[k])
@@ -315,8 +315,8 @@ inline Svg_drawing read_svg_polylines(std::istream& is, const std::string& file)
       {
         lo[c] = (std::min)(lo[c], q[c]);
         hi[c] = (std::max)(hi[c], q[c]);
-        if(!std::isfinite(hi[c] - lo[c]))
-          throw Input_error(file, drawing.lines[k], "the drawing's extent is not a finite number (coordinates too large)");
+        if(!std::isfinite(hi[c] - lo[c]) || !std::isfinite(hi[c] + lo[c]))
+          throw Input_error(file, drawing.lines[k], "the drawing's extent or centre is not a finite number (coordinates too large)");
       }
   return drawing;
 }
