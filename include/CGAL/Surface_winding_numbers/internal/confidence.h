@@ -69,14 +69,6 @@ Label_regions label_regions(const Mesh_tables& m, const std::vector<double>& cha
   return r;
 }
 
-// The mean interior edge length: the unit of the costs.
-inline double mean_interior_edge_length(const Mesh_tables& m)
-{
-  double mean_len = 0;
-  for(const Arc& a : m.arcs) mean_len += m.edge_length(a.edge);
-  return m.arcs.empty() ? 1. : mean_len / double(m.arcs.size());
-}
-
 // Eq. 11 weight of every edge: epsilon x length on input edges, length elsewhere, in mean interior edge lengths.
 inline std::vector<double> eq11_weights(const Mesh_tables& m, const std::vector<double>& chain, double epsilon)
 {

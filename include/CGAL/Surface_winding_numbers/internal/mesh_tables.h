@@ -177,6 +177,16 @@ struct Mesh_tables
   }
 };
 
+// The mean length of the interior edges (one per arc): the unit of Eq. 11's costs, in the residual
+// problem and in the confidence's flip costs (1 if there is no arc or the mean is not positive).
+inline double mean_interior_edge_length(const Mesh_tables& m)
+{
+  double mean_len = 0;
+  for(const Arc& a : m.arcs) mean_len += m.edge_length(a.edge);
+  mean_len = m.arcs.empty() ? 1. : mean_len / double(m.arcs.size());
+  return mean_len > 0 ? mean_len : 1.;
+}
+
 // Per component: 1 if its faces can be oriented so that every edge with exactly two faces is
 // traversed once each way (edges with more faces are not considered), 0 otherwise (a Moebius strip).
 // Found by propagating a flip bit across the arcs of two-sided edges (breadth first per component).

@@ -92,10 +92,7 @@ inline Residual_problem residual_problem(const Mesh_tables& m, const std::vector
 {
   const std::size_t na = m.arcs.size();
   const double inf = std::numeric_limits<double>::infinity();
-  double mean_length = 0;
-  for(const Arc& a : m.arcs) mean_length += m.edge_length(a.edge);
-  mean_length = na > 0 ? mean_length / double(na) : 1.;
-  if(!(mean_length > 0)) mean_length = 1.;
+  const double mean_length = mean_interior_edge_length(m);
   Residual_problem p;
   p.number_of_faces = m.nf;
   p.left.resize(na); p.right.resize(na); p.s.resize(na); p.cost.resize(na); p.lower.resize(na); p.upper.resize(na);
