@@ -2,10 +2,13 @@
 // SPDX-License-Identifier: MIT
 //
 // `swn._swn.Solver`: a Surface_mesh built from (V, F) and the package's Surface_winding_numbers_solver on
-// it; `_solve()` takes curves as vertex polylines (flattened, with offsets and one multiplicity each) and
-// returns the outputs as numpy arrays, in the order of the input's faces and of the mesh's edges.
+// it, with the sparse solver chosen by name; `_solve()` takes curves as vertex polylines (flattened, with
+// offsets and one multiplicity each) and the settings, and returns the outputs as numpy arrays, in the
+// order of the input's faces and of the mesh's edges. `solve_on_mesh()` is the same for one solve.
 
 #include "swn_python.h"
+
+#include "swn_io/solver_choice.h"
 
 #include <CGAL/surface_winding_numbers.h>
 
@@ -26,113 +29,171 @@
 namespace swn_python {
 
 namespace SWN = CGAL::Surface_winding_numbers;
+namespace IO = CGAL::Surface_winding_numbers::IO;
 
 namespace {
 
-typedef py::array_t<std::int64_t, py::array::c_style | py::array::forcecast> Index_array;
-
-// the report as a dict, its fields under their C++ names, the timings (time_X) in a dict `times`
-py::dict report_dict(const SWN::Solve_report& r)
+// the per-face, per-corner and per-edge outputs of a solve on a Surface_mesh
+struct Mesh_outputs
 {
-  py::dict d, times;
-#define SWN_REPORT(F) d[#F] = r.F;
-  SWN_REPORT(success) SWN_REPORT(error) SWN_REPORT(invalid_input)
-  SWN_REPORT(vertices) SWN_REPORT(edges) SWN_REPORT(faces) SWN_REPORT(components)
-  SWN_REPORT(border_edges) SWN_REPORT(border_loops) SWN_REPORT(genus)
-  SWN_REPORT(euler_characteristic) SWN_REPORT(orientable)
-  SWN_REPORT(curve_edges) SWN_REPORT(interior_endpoints)
-  SWN_REPORT(homology_correction) SWN_REPORT(hodge_projection) SWN_REPORT(reduced_residual) SWN_REPORT(lp_ran)
-  SWN_REPORT(jump_laplacian_reused) SWN_REPORT(jump_laplacian_update_rank) SWN_REPORT(lp_variables) SWN_REPORT(lp_rows) SWN_REPORT(lp_objective)
-  SWN_REPORT(degenerate_weights) SWN_REPORT(min_label) SWN_REPORT(max_label) SWN_REPORT(nonbounding_closing_units)
-#undef SWN_REPORT
-#define SWN_TIME(F) times[#F] = r.time_##F;
-  SWN_TIME(setup) SWN_TIME(jump_laplace) SWN_TIME(hodge) SWN_TIME(residual) SWN_TIME(second_solve)
-  SWN_TIME(labels) SWN_TIME(total) SWN_TIME(mesh) SWN_TIME(output_maps)
-#undef SWN_TIME
-  d["times"] = times;
-  return d;
+  std::vector<int> labels, G, bounding;
+  std::vector<double> g, w;
+  SWN::Solve_report report;
+};
+
+// the library's solver on a mesh, with the sparse solver fixed at construction and the residual solver
+// chosen at each solve
+class Mesh_solver
+{
+public:
+  virtual ~Mesh_solver() = default;
+  virtual bool is_valid() const = 0;
+  virtual const SWN::Solve_report& report() const = 0;
+  virtual bool solve(const std::vector<int>& chain, const Solve_options& o, bool keep, Mesh_outputs& out) = 0;
+};
+
+template <class SparseSolver>
+class Mesh_solver_of : public Mesh_solver
+{
+public:
+  explicit Mesh_solver_of(const Mesh& mesh) : mesh_(mesh), solver_(mesh) {}
+  bool is_valid() const override { return solver_.is_valid(); }
+  const SWN::Solve_report& report() const override { return solver_.report(); }
+  bool solve(const std::vector<int>& chain, const Solve_options& o, bool keep, Mesh_outputs& out) override
+  {
+    const auto ei = get(boost::edge_index, mesh_);
+    auto edge_map = [&](auto& v) { return boost::make_iterator_property_map(v.begin(), ei); };
+    return IO::with_lp_solver(o.lp_solver, [&](auto& lp) {
+      return solver_.solve(
+        boost::make_iterator_property_map(chain.begin(), ei),
+        boost::make_iterator_property_map(out.labels.begin(), get(boost::face_index, mesh_)),
+        SWN::parameters::nonbounding_chain_map(edge_map(out.G),
+        SWN::parameters::nonbounding_chain_real_map(edge_map(out.g),
+        SWN::parameters::bounding_chain_map(edge_map(out.bounding),
+        SWN::parameters::winding_number_map(boost::make_iterator_property_map(out.w.begin(), get(boost::halfedge_index, mesh_)),
+        SWN::parameters::epsilon(o.epsilon,
+        SWN::parameters::use_reduced_residual(o.reduced_residual,
+        SWN::parameters::filter_nonbounding_loops(o.filter_nonbounding_loops,
+        SWN::parameters::concurrency(o.concurrency,
+        SWN::parameters::keep_hodge_factorization(keep,
+        SWN::parameters::lp_solver(std::ref(lp),
+        SWN::parameters::report(std::ref(out.report))))))))))))
+          .verbose(o.verbose));
+    });
+  }
+
+private:
+  const Mesh& mesh_;
+  SWN::Surface_winding_numbers_solver<Mesh, SparseSolver> solver_;
+};
+
+// the library's solver on `mesh` with the sparse solver `name` (runs without the GIL)
+std::unique_ptr<Mesh_solver> make_mesh_solver(const Mesh& mesh, const std::string& name)
+{
+  return IO::with_linear_solver(name, [&](auto sparse_solver) -> std::unique_ptr<Mesh_solver> {
+    return std::make_unique<Mesh_solver_of<decltype(sparse_solver)>>(mesh);
+  });
 }
 
-// the library's failure as a Python exception with its message: ValueError for bad input, RuntimeError
-// for a failed solver step
-[[noreturn]] void raise_failure(const SWN::Solve_report& r)
+// adds the polylines vertices[offsets[i]:offsets[i+1]], each `multiplicities[i]` times, to the chain
+// (SWN::add_halfedges_to_chain(), once per distinct multiplicity); ValueError naming `curves[i]` if a
+// vertex is out of range or two consecutive vertices are not joined by an edge
+void add_curves(const Mesh& mesh, const Curve_arrays& curves, std::vector<int>& chain)
 {
-  if(r.invalid_input) throw py::value_error(r.error);
-  throw std::runtime_error(r.error);
+  const auto vx = curves.vertices.unchecked<1>();
+  const auto of = curves.offsets.unchecked<1>();
+  const auto mu = curves.multiplicities.unchecked<1>();
+  if(of.shape(0) != mu.shape(0) + 1 || of(0) != 0 || of(of.shape(0) - 1) != vx.shape(0))
+    throw py::value_error("curves: offsets and multiplicities do not match the vertices");
+  const std::int64_t nv = std::int64_t(mesh.number_of_vertices());
+  std::map<int, std::vector<Mesh::Halfedge_index>> by_multiplicity;
+  for(py::ssize_t i = 0; i < mu.shape(0); ++i)
+  {
+    const std::string curve = "curves[" + std::to_string(i) + "]: ";
+    if(mu(i) < INT_MIN / 2 || mu(i) > INT_MAX / 2)
+      throw py::value_error(curve + "multiplicity " + std::to_string(mu(i)) + " is out of range");
+    if(of(i + 1) < of(i)) throw py::value_error(curve + "offsets decrease");
+    std::vector<Mesh::Halfedge_index>& halfedges = by_multiplicity[int(mu(i))];
+    for(std::int64_t k = of(i); k < of(i + 1); ++k)
+    {
+      if(vx(k) < 0 || vx(k) >= nv)
+        throw py::value_error(curve + "vertex index " + std::to_string(vx(k)) + " is out of range (" +
+                              std::to_string(nv) + " vertices)");
+      if(k == of(i)) continue;
+      const auto h = CGAL::halfedge(Mesh::Vertex_index(Mesh::size_type(vx(k - 1))),
+                                    Mesh::Vertex_index(Mesh::size_type(vx(k))), mesh);
+      if(!h.second)
+        throw py::value_error(curve + "vertices " + std::to_string(vx(k - 1)) + " and " + std::to_string(vx(k)) +
+                              " are not joined by an edge of the mesh");
+      halfedges.push_back(h.first);
+    }
+  }
+  auto chain_map = boost::make_iterator_property_map(chain.begin(), get(boost::edge_index, mesh));
+  for(const auto& [m, halfedges] : by_multiplicity)
+    if(m != 0 && !halfedges.empty()) SWN::add_halfedges_to_chain(mesh, halfedges, chain_map, m);
 }
 
-template <class T>
-py::array_t<T> array_of(const std::vector<T>& values)
+// one solve of the curves on `mesh` by `solver`, its outputs as numpy arrays (W per face, w per corner,
+// the chains per edge) and the report
+py::dict solve(Mesh_solver& solver, const Mesh& mesh, const Curve_arrays& curves, const Solve_options& options,
+               bool keep, std::mutex* mutex)
 {
-  py::array_t<T> a(py::ssize_t(values.size()));
-  std::copy(values.begin(), values.end(), a.mutable_data());
-  return a;
+  const std::size_t nf = mesh.number_of_faces(), ne = mesh.number_of_edges();
+  std::vector<int> chain(ne, 0);
+  add_curves(mesh, curves, chain);
+  Mesh_outputs out;
+  out.labels.assign(nf, 0);
+  out.G.assign(ne, 0);
+  out.bounding.assign(ne, 0);
+  out.g.assign(ne, 0.);
+  out.w.assign(mesh.number_of_halfedges(), std::numeric_limits<double>::quiet_NaN());
+  bool ok = false;
+  {
+    py::gil_scoped_release release;
+    std::unique_lock<std::mutex> lock;   // one solve at a time on a solver
+    if(mutex) lock = std::unique_lock<std::mutex>(*mutex);
+    ok = solver.solve(chain, options, keep, out);
+  }
+  if(!ok) raise_failure(out.report);
+
+  // w at corner k of face f: halfedge(f) points to the face's first vertex (build_oriented_mesh())
+  py::array_t<double> w_corners({py::ssize_t(nf), py::ssize_t(3)});
+  auto wc = w_corners.mutable_unchecked<2>();
+  for(Mesh::Face_index f : mesh.faces())
+  {
+    Mesh::Halfedge_index h = mesh.halfedge(f);
+    for(int k = 0; k < 3; ++k, h = mesh.next(h)) wc(py::ssize_t(f), k) = out.w[std::size_t(h)];
+  }
+  py::dict result;
+  result["W"] = array_of(out.labels);
+  result["w"] = w_corners;
+  result["bounding"] = array_of(out.bounding);
+  result["G"] = array_of(out.G);
+  result["g"] = array_of(out.g);
+  result["report"] = report_dict(out.report);
+  return result;
 }
 
 class Solver
 {
-  typedef SWN::Surface_winding_numbers_solver<Mesh> Library_solver;
-
 public:
-  Solver(py::handle V, py::handle F)
+  Solver(py::handle V, py::handle F, const std::string& linear_solver)
   {
     const Triangle_soup soup = soup_from_arrays(V, F);
     {
       py::gil_scoped_release release;
       mesh_from_soup(soup, mesh_, warnings_);
-      solver_ = std::make_unique<Library_solver>(mesh_);
+      solver_ = make_mesh_solver(mesh_, linear_solver);
     }
     if(!solver_->is_valid()) raise_failure(solver_->report());
     construction_report_ = solver_->report();
   }
 
   py::dict solve(const Index_array& vertices, const Index_array& offsets, const Index_array& multiplicities,
-                 double epsilon, bool reduced_residual, bool concurrency, bool keep_hodge_factorization, bool verbose)
+                 const py::dict& options)
   {
-    const std::size_t nf = mesh_.number_of_faces(), ne = mesh_.number_of_edges();
-    std::vector<int> chain(ne, 0);
-    add_curves(vertices, offsets, multiplicities, chain);
-
-    std::vector<int> labels(nf, 0), G(ne, 0), bounding(ne, 0);
-    std::vector<double> g(ne, 0.), w(mesh_.number_of_halfedges(), std::numeric_limits<double>::quiet_NaN());
-    SWN::Solve_report report;
-    bool ok = false;
-    {
-      py::gil_scoped_release release;
-      std::lock_guard<std::mutex> lock(mutex_);   // one solve at a time on this solver
-      const auto ei = get(boost::edge_index, mesh_);
-      auto edge_map = [&](auto& v) { return boost::make_iterator_property_map(v.begin(), ei); };
-      ok = solver_->solve(
-        edge_map(chain), boost::make_iterator_property_map(labels.begin(), get(boost::face_index, mesh_)),
-        SWN::parameters::nonbounding_chain_map(edge_map(G),
-        SWN::parameters::nonbounding_chain_real_map(edge_map(g),
-        SWN::parameters::bounding_chain_map(edge_map(bounding),
-        SWN::parameters::winding_number_map(boost::make_iterator_property_map(w.begin(), get(boost::halfedge_index, mesh_)),
-        SWN::parameters::epsilon(epsilon,
-        SWN::parameters::use_reduced_residual(reduced_residual,
-        SWN::parameters::concurrency(concurrency,
-        SWN::parameters::keep_hodge_factorization(keep_hodge_factorization,
-        SWN::parameters::report(std::ref(report))))))))))
-          .verbose(verbose));
-    }
-    if(!ok) raise_failure(report);
-
-    // w at corner k of face f: halfedge(f) points to the face's first vertex (mesh_from_soup())
-    py::array_t<double> w_corners({py::ssize_t(nf), py::ssize_t(3)});
-    auto wc = w_corners.mutable_unchecked<2>();
-    for(Mesh::Face_index f : mesh_.faces())
-    {
-      Mesh::Halfedge_index h = mesh_.halfedge(f);
-      for(int k = 0; k < 3; ++k, h = mesh_.next(h)) wc(py::ssize_t(f), k) = w[std::size_t(h)];
-    }
-    py::dict result;
-    result["W"] = array_of(labels);
-    result["w"] = w_corners;
-    result["bounding"] = array_of(bounding);
-    result["G"] = array_of(G);
-    result["g"] = array_of(g);
-    result["report"] = report_dict(report);
-    return result;
+    return swn_python::solve(*solver_, mesh_, Curve_arrays{vertices, offsets, multiplicities}, solve_options(options),
+                             true, &mutex_);
   }
 
   py::array_t<std::int64_t> edges() const { return edge_array(mesh_); }
@@ -142,61 +203,34 @@ public:
   std::size_t number_of_faces() const { return mesh_.number_of_faces(); }
 
 private:
-  // adds the polylines vertices[offsets[i]:offsets[i+1]], each `multiplicities[i]` times, to the chain
-  // (SWN::add_halfedges_to_chain(), once per distinct multiplicity); ValueError naming `curves[i]` if a
-  // vertex is out of range or two consecutive vertices are not joined by an edge
-  void add_curves(const Index_array& vertices, const Index_array& offsets, const Index_array& multiplicities,
-                  std::vector<int>& chain) const
-  {
-    const auto vx = vertices.unchecked<1>();
-    const auto of = offsets.unchecked<1>();
-    const auto mu = multiplicities.unchecked<1>();
-    if(of.shape(0) != mu.shape(0) + 1 || of(0) != 0 || of(of.shape(0) - 1) != vx.shape(0))
-      throw py::value_error("curves: offsets and multiplicities do not match the vertices");
-    const std::int64_t nv = std::int64_t(mesh_.number_of_vertices());
-    std::map<int, std::vector<Mesh::Halfedge_index>> by_multiplicity;
-    for(py::ssize_t i = 0; i < mu.shape(0); ++i)
-    {
-      const std::string curve = "curves[" + std::to_string(i) + "]: ";
-      if(mu(i) < INT_MIN / 2 || mu(i) > INT_MAX / 2)
-        throw py::value_error(curve + "multiplicity " + std::to_string(mu(i)) + " is out of range");
-      if(of(i + 1) < of(i)) throw py::value_error(curve + "offsets decrease");
-      std::vector<Mesh::Halfedge_index>& halfedges = by_multiplicity[int(mu(i))];
-      for(std::int64_t k = of(i); k < of(i + 1); ++k)
-      {
-        if(vx(k) < 0 || vx(k) >= nv)
-          throw py::value_error(curve + "vertex index " + std::to_string(vx(k)) + " is out of range (" +
-                                std::to_string(nv) + " vertices)");
-        if(k == of(i)) continue;
-        const auto h = CGAL::halfedge(Mesh::Vertex_index(Mesh::size_type(vx(k - 1))),
-                                      Mesh::Vertex_index(Mesh::size_type(vx(k))), mesh_);
-        if(!h.second)
-          throw py::value_error(curve + "vertices " + std::to_string(vx(k - 1)) + " and " + std::to_string(vx(k)) +
-                                " are not joined by an edge of the mesh");
-        halfedges.push_back(h.first);
-      }
-    }
-    auto chain_map = boost::make_iterator_property_map(chain.begin(), get(boost::edge_index, mesh_));
-    for(const auto& [m, halfedges] : by_multiplicity)
-      if(m != 0 && !halfedges.empty()) SWN::add_halfedges_to_chain(mesh_, halfedges, chain_map, m);
-  }
-
   Mesh mesh_;
   std::vector<std::string> warnings_;
-  std::unique_ptr<Library_solver> solver_;   // refers to mesh_
+  std::unique_ptr<Mesh_solver> solver_;   // refers to mesh_
   SWN::Solve_report construction_report_;
   std::mutex mutex_;
 };
 
 } // namespace
 
+py::dict solve_on_mesh(const Mesh& mesh, const Curve_arrays& curves, const Solve_options& options)
+{
+  std::unique_ptr<Mesh_solver> solver;
+  {
+    py::gil_scoped_release release;
+    solver = make_mesh_solver(mesh, options.linear_solver);
+  }
+  if(!solver->is_valid()) raise_failure(solver->report());
+  // one solve: the Hodge step's per-mesh part is freed before the residual step (lower peak memory)
+  py::dict result = solve(*solver, mesh, curves, options, false, nullptr);
+  result["edges"] = edge_array(mesh);
+  return result;
+}
+
 void bind_solver(py::module_& m)
 {
   py::class_<Solver>(m, "Solver", "The mesh (V, F) and the package's solver on it; see swn.Solver")
-    .def(py::init<py::handle, py::handle>(), py::arg("V"), py::arg("F"))
-    .def("_solve", &Solver::solve, py::arg("vertices"), py::arg("offsets"), py::arg("multiplicities"),
-         py::arg("epsilon"), py::arg("reduced_residual"), py::arg("concurrency"),
-         py::arg("keep_hodge_factorization"), py::arg("verbose"))
+    .def(py::init<py::handle, py::handle, const std::string&>(), py::arg("V"), py::arg("F"), py::arg("linear_solver"))
+    .def("_solve", &Solver::solve, py::arg("vertices"), py::arg("offsets"), py::arg("multiplicities"), py::arg("options"))
     .def_property_readonly("edges", &Solver::edges)
     .def_property_readonly("report", &Solver::report)
     .def_property_readonly("warnings", &Solver::warnings)

@@ -1,8 +1,9 @@
 // Copyright (c) 2026 The CGAL Surface Winding Numbers project.
 // SPDX-License-Identifier: MIT
 //
-// The Python module `swn._swn`: what its three source files share. module.cpp converts between numpy
-// arrays and a Surface_mesh and registers the exceptions, solver.cpp binds the solver, readers.cpp the
+// The Python module `swn._swn`: what its source files share. module.cpp converts between numpy arrays,
+// soups and a Surface_mesh, registers the exceptions and binds `_winding_numbers()` (either route),
+// solver.cpp binds the solver on a triangle mesh, soup.cpp solves polygon soups, readers.cpp binds the
 // tool's mesh and curve readers and its conforming cut.
 
 #ifndef SWN_PYTHON_H
@@ -10,12 +11,15 @@
 
 #include "swn_io/mesh_soup.h"
 
+#include <CGAL/Surface_winding_numbers/Solve_report.h>
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -27,9 +31,12 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 typedef CGAL::Surface_winding_numbers::IO::Triangle_soup Triangle_soup;
 
-/// The soup of the arrays `V` (n x 3 numbers) and `F` (m x 3 integers, or a sequence of m polygons of
-/// vertex indices): needs the GIL. Throws `TypeError` / `ValueError` on arrays of the wrong kind or shape,
-/// a face that is not a triangle, a negative index or a non-finite coordinate.
+typedef py::array_t<std::int64_t, py::array::c_style | py::array::forcecast> Index_array;
+
+/// The soup of the arrays `V` (n x 3 numbers) and `F` (m x k integers, k >= 3, or a sequence of m polygons
+/// of vertex indices): needs the GIL. Arrays of float32/float64 coordinates and of int32/int64/uint32/uint64
+/// indices are read in place, in any memory order. Throws `TypeError` / `ValueError` on arrays of the wrong
+/// kind or shape, a face of fewer than three vertices, a negative index or a non-finite coordinate.
 Triangle_soup soup_from_arrays(py::handle V, py::handle F);
 
 /// The mesh of a soup: vertex `i` is `soup.points[i]`, face `j` is `soup.triangles[j]`, and `halfedge(j)`
@@ -47,6 +54,46 @@ py::array_t<std::int64_t> face_array(const Mesh& mesh);
 py::array_t<std::int64_t> edge_array(const Mesh& mesh);
 /// a Python list of str
 py::list string_list(const std::vector<std::string>& strings);
+
+/// the settings of a solve (validated by swn/__init__.py): the library's named parameters, and the
+/// residual and sparse solvers by the names of `IO::lp_solver_names()` and `IO::linear_solver_names()`
+struct Solve_options
+{
+  double epsilon = 0.01;
+  std::string lp_solver, linear_solver;
+  bool reduced_residual = false, filter_nonbounding_loops = true, concurrency = true, verbose = false;
+};
+/// the options of the dict `d` (keys: the fields' names)
+Solve_options solve_options(const py::dict& d);
+
+/// the curves given as vertex polylines `vertices[offsets[i]:offsets[i+1]]`, each `multiplicities[i]` times
+struct Curve_arrays
+{
+  Index_array vertices, offsets, multiplicities;
+};
+
+/// the report as a dict, its fields under their C++ names, the timings (time_X) in a dict `times`
+py::dict report_dict(const CGAL::Surface_winding_numbers::Solve_report& r);
+/// the library's failure as a Python exception with its message: ValueError for bad input, RuntimeError
+/// for a failed solver step
+[[noreturn]] void raise_failure(const CGAL::Surface_winding_numbers::Solve_report& r);
+
+/// a 1D numpy array of `values`
+template <class T>
+py::array_t<T> array_of(const std::vector<T>& values)
+{
+  py::array_t<T> a(py::ssize_t(values.size()));
+  std::copy(values.begin(), values.end(), a.mutable_data());
+  return a;
+}
+
+/// a one-shot solve on the triangle mesh `mesh` (solver.cpp): the dict of `Solver._solve()`, with `edges`
+py::dict solve_on_mesh(const Mesh& mesh, const Curve_arrays& curves, const Solve_options& options);
+/// a solve on the polygon soup (soup.cpp): labels per polygon, w per corner, the chains on the soup's edges
+/// (their order: first appearance, faces and their sides in order, oriented as in the first face), with
+/// `edges` and `warnings`
+py::dict solve_on_soup(const Triangle_soup& soup, const Curve_arrays& curves, const Index_array& dual_pairs,
+                       const Solve_options& options);
 
 /// `Solver` (solver.cpp)
 void bind_solver(py::module_& m);

@@ -1,13 +1,14 @@
-"""Surface winding numbers (Feng, Gillespie and Crane, SIGGRAPH 2023) of curves on triangle meshes.
+"""Surface winding numbers (Feng, Gillespie and Crane, SIGGRAPH 2023) of curves on surface meshes.
 
-numpy in, numpy out: ``winding_numbers(V, F, curves)`` solves once, ``Solver(V, F)`` keeps the mesh for
-many curves, ``read_mesh()``, ``read_curve()`` and ``load()`` are the readers of the ``swn`` tool. The
-manual is python/README.md in the source tree.
+numpy in, numpy out: ``winding_numbers(V, F, curves)`` solves once (triangle meshes, polygon meshes and
+polygon soups), ``Solver(V, F)`` keeps a triangle mesh for many curves, ``read_mesh()``, ``read_curve()``
+and ``load()`` are the readers of the ``swn`` tool. The manual is python/README.md in the source tree.
 
 Conventions
 -----------
-* ``V``: (n, 3) coordinates; ``F``: (m, 3) vertex indices (0-based) of consistently oriented triangles
-  (an oriented 2-manifold, possibly with border), or a sequence of m triangles.
+* ``V``: (n, 3) coordinates; ``F``: (m, k) vertex indices (0-based), or a sequence of m polygons. An
+  oriented 2-manifold triangle mesh (possibly with border) is solved as a mesh; anything else (polygons,
+  nonmanifold edges or vertices, nonorientable gluings) by ``winding_numbers()`` as a polygon soup.
 * Curves run along edges: either an integer array of k halfedges ``(source, target)``, shape (k, 2), or a
   sequence of vertex polylines (repeat the first vertex at the end to close a loop). ``multiplicities``
   gives one integer per halfedge, resp. per polyline (default 1); a negative one reverses it.
@@ -28,7 +29,14 @@ from . import _swn
 
 __version__ = _swn.__version__
 __all__ = ["winding_numbers", "Solver", "WindingNumbers", "read_mesh", "read_curve", "load", "CurveOnMesh",
-           "InputError", "MeshWarning"]
+           "InputError", "MeshWarning", "LP_SOLVERS", "LINEAR_SOLVERS"]
+
+#: the residual solvers compiled in (``lp_solver=``), the default first: "lemon" (multilevel minimum-cost
+#: flow with an optimality certificate), "lemon-simplex" (LEMON's network simplex), "glpk" (simplex)
+LP_SOLVERS = tuple(_swn.lp_solvers)
+#: the sparse Cholesky solvers compiled in (``linear_solver=``), the default first: "cholmod" (the
+#: package's supernodal factorization on CHOLMOD's analysis), "ldlt" (Eigen's SimplicialLDLT)
+LINEAR_SOLVERS = tuple(_swn.linear_solvers)
 
 #: Bad input in a file read by ``read_mesh()``, ``read_curve()`` or ``load()``: a ``ValueError`` whose
 #: message is the tool's ``FILE:LINE: reason``; attributes ``file``, ``line`` (None when the problem is on
@@ -45,12 +53,14 @@ class WindingNumbers:
     """The outputs of a solve (numpy arrays) and its report."""
 
     W: np.ndarray         #: (m,) int32: the winding number label of every face, in the order of F
-    w: np.ndarray         #: (m, 3) float64: w at corner k of face f (vertex F[f, k]); NaN at interior curve endpoints
+    w: np.ndarray         #: (m, k) float64: w at corner c of face f (vertex F[f][c]); faces of mixed sizes: all
+                          #: corners in one (sum of the sizes,) array, face by face; NaN at interior curve endpoints
     edges: np.ndarray     #: (E, 2) int64: the vertex pairs (a, b) the per-edge values refer to
     bounding: np.ndarray  #: (E,) int32: the closed completion of the bounding curves (the jumps of W)
     G: np.ndarray         #: (E,) int32: the nonbounding loops, closed
     g: np.ndarray         #: (E,) float64: the real-valued nonbounding chain
     report: dict          #: what the solve did: sizes, topology, residual problem, times in seconds
+    polygon_soup: str = ""  #: why it was solved as a polygon soup ("" when solved as a triangle mesh)
 
 
 @dataclass(eq=False)
@@ -104,24 +114,70 @@ def _curve_arrays(curves, multiplicities):
     return vertices, offsets, m
 
 
+def _boolean(value, name):
+    if not isinstance(value, (bool, np.bool_)):
+        raise ValueError(f"{name} must be True or False, not {value!r}")
+    return bool(value)
+
+
+def _choice(value, name, allowed):
+    if value is None:
+        return allowed[0]
+    if value not in allowed:
+        raise ValueError(f"{name} must be one of {', '.join(map(repr, allowed))} (compiled in), not {value!r}")
+    return value
+
+
+def _options(epsilon, lp_solver, linear_solver, reduced_residual, filter_nonbounding_loops, concurrency, verbose):
+    """The settings of a solve, checked: ValueError naming the setting and its allowed values."""
+    try:
+        eps = float(epsilon)
+    except (TypeError, ValueError):
+        eps = None
+    if eps is None or not np.isfinite(eps) or eps <= 0 or isinstance(epsilon, (bool, np.bool_)):
+        raise ValueError(f"epsilon must be positive and finite, not {epsilon!r}")
+    return {"epsilon": eps, "lp_solver": _choice(lp_solver, "lp_solver", LP_SOLVERS),
+            "linear_solver": _choice(linear_solver, "linear_solver", LINEAR_SOLVERS),
+            "reduced_residual": _boolean(reduced_residual, "reduced_residual"),
+            "filter_nonbounding_loops": _boolean(filter_nonbounding_loops, "filter_nonbounding_loops"),
+            "concurrency": _boolean(concurrency, "concurrency"), "verbose": _boolean(verbose, "verbose")}
+
+
+def _dual_pairs(dual_chain):
+    """The dual chain as a (k, 2) int64 array of face pairs (a, b): +1 from face a into face b."""
+    if dual_chain is None:
+        return np.zeros((0, 2), np.int64)
+    if isinstance(dual_chain, np.ndarray):
+        if dual_chain.ndim != 2 or dual_chain.shape[1] != 2:
+            raise ValueError("dual_chain given as an array must be face pairs of shape (k, 2), not of shape "
+                             f"{dual_chain.shape}; give face paths as a list of sequences")
+        return np.ascontiguousarray(_integer_array(dual_chain, "dual_chain"))
+    pairs = []
+    for i, p in enumerate(dual_chain):
+        p = _integer_array(np.asarray(p), f"dual_chain[{i}]")
+        if p.ndim != 1:
+            raise ValueError(f"dual_chain[{i}] must be a sequence of face indices (a path), not of shape {p.shape}")
+        pairs.append(np.column_stack([p[:-1], p[1:]]))
+    return np.ascontiguousarray(np.concatenate(pairs)) if pairs else np.zeros((0, 2), np.int64)
+
+
 class Solver:
-    """The mesh (V, F) and the package's solver on it, for many curves on one mesh.
+    """The triangle mesh (V, F) and the package's solver on it, for many curves on one mesh.
 
     The per-mesh work (tables, cotan weights, the Hodge step's harmonic basis, the factorized Laplacian of
-    closed curves) is done once. Raises ``ValueError`` on an invalid mesh (non-triangle face, index out of
-    range, nonmanifold edge or vertex, inconsistent orientation, non-finite coordinate, zero-area face, no
-    face). The mesh is copied: later changes to V and F do not reach the solver. Solves on one solver run
-    one at a time; the GIL is released while they run.
+    closed curves) is done once. ``linear_solver``: the sparse Cholesky solver, one of ``LINEAR_SOLVERS``
+    (default: the first). Raises ``ValueError`` on an invalid mesh (index out of range, zero-area face,
+    non-finite coordinate, no face) and on a surface that is not an oriented 2-manifold triangle mesh
+    (polygons, nonmanifold edge or vertex, inconsistent orientation: ``winding_numbers()`` solves those as
+    polygon soups). The mesh is copied: later changes to V and F do not reach the solver. Solves on one
+    solver run one at a time; the GIL is released while they run.
     """
 
-    def __init__(self, V, F):
-        self._setup(V, F)
-
-    def _setup(self, V, F):
-        self._solver = _swn.Solver(V, F)
+    def __init__(self, V, F, *, linear_solver=None):
+        self._solver = _swn.Solver(V, F, _choice(linear_solver, "linear_solver", LINEAR_SOLVERS))
         self.edges = self._solver.edges
         self.edges.flags.writeable = False
-        _warn(self._solver.warnings, 3)   # at the caller of Solver() or winding_numbers()
+        _warn(self._solver.warnings, 2)   # at the caller of Solver()
 
     @property
     def report(self):
@@ -136,39 +192,54 @@ class Solver:
     def number_of_faces(self):
         return self._solver.number_of_faces
 
-    def solve(self, curves, multiplicities=None, *, epsilon=0.01, reduced_residual=False, concurrency=True,
-              verbose=False):
+    def solve(self, curves, multiplicities=None, *, epsilon=0.01, lp_solver=None, reduced_residual=False,
+              filter_nonbounding_loops=True, concurrency=True, verbose=False):
         """Winding numbers of ``curves`` (halfedges (k, 2) or vertex polylines) on this mesh.
 
-        ``epsilon``: relative cost of jumps of the residual function across the curve (paper: 0.01);
-        ``reduced_residual``: the paper's Sec. 6 approximation; ``concurrency=False`` keeps the solve on
-        the calling thread; ``verbose`` prints the steps to stderr. Returns a ``WindingNumbers``. Raises
-        ``ValueError`` on bad curves (a vertex out of range, consecutive vertices not joined by an edge, a
-        curve on a border edge) and ``RuntimeError`` when a step of the solver fails, with the
-        library's message.
+        The settings are those of ``winding_numbers()`` (the sparse solver is the solver's). Returns a
+        ``WindingNumbers``. Raises ``ValueError`` on bad curves (a vertex out of range, consecutive vertices
+        not joined by an edge, a curve on a border edge) and bad settings, and ``RuntimeError`` when a step
+        of the solver fails, with the library's message.
         """
-        return self._solve(curves, multiplicities, epsilon, reduced_residual, concurrency, verbose, True)
-
-    def _solve(self, curves, multiplicities, epsilon, reduced_residual, concurrency, verbose, keep):
         vertices, offsets, m = _curve_arrays(curves, multiplicities)
-        r = self._solver._solve(vertices, offsets, m, float(epsilon), bool(reduced_residual), bool(concurrency),
-                                keep, bool(verbose))
+        options = _options(epsilon, lp_solver, LINEAR_SOLVERS[0], reduced_residual, filter_nonbounding_loops,
+                           concurrency, verbose)
+        r = self._solver._solve(vertices, offsets, m, options)
         return WindingNumbers(W=r["W"], w=r["w"], edges=self.edges, bounding=r["bounding"], G=r["G"], g=r["g"],
                               report=r["report"])
 
 
-def winding_numbers(V, F, curves, multiplicities=None, *, epsilon=0.01, reduced_residual=False, concurrency=True,
-                    verbose=False):
-    """Winding numbers of ``curves`` on the triangle mesh (V, F): one solve (see ``Solver.solve()``).
+def winding_numbers(V, F, curves=None, multiplicities=None, *, dual_chain=None, soup=False, epsilon=0.01,
+                    lp_solver=None, linear_solver=None, reduced_residual=False, filter_nonbounding_loops=True,
+                    concurrency=True, verbose=False):
+    """Winding numbers of ``curves`` (and of ``dual_chain``) on the surface (V, F): one solve.
 
-    Returns a ``WindingNumbers``: ``W`` per face, ``w`` per corner, ``bounding``, ``G`` and ``g`` per edge of
-    ``edges``, and the ``report``. Raises ``ValueError`` on bad input and ``RuntimeError`` when the solver
-    fails, with the library's messages.
+    ``F``: an (m, k) array or a sequence of polygons. An oriented 2-manifold triangle mesh is solved as a
+    mesh (as ``Solver``); polygons, nonmanifold edges and vertices, nonorientable gluings, a ``dual_chain``
+    or ``soup=True`` go through the library's ``polygon_soup_winding_numbers()``, with labels per input
+    polygon (``polygon_soup`` in the result says why). ``curves``: halfedges (k, 2) or vertex polylines
+    along the edges; ``dual_chain``: face pairs (k, 2), or face paths, each pair a jump of +1 from the first
+    face into the second across the edge they share (the input of choice on nonorientable surfaces).
+
+    Settings (the library's named parameters): ``epsilon`` (relative cost of jumps of the residual function
+    across the curve, paper Eq. 11), ``lp_solver`` (one of ``LP_SOLVERS``), ``linear_solver`` (one of
+    ``LINEAR_SOLVERS``), ``reduced_residual`` (the paper's Sec. 6 approximation),
+    ``filter_nonbounding_loops`` (``False``: labels are the rounded jump-harmonic function, paper Fig. 27),
+    ``concurrency`` (``False``: the calling thread only), ``verbose`` (the steps on stderr).
+
+    Returns a ``WindingNumbers``. Raises ``ValueError`` on bad input and bad settings and ``RuntimeError``
+    when the solver fails, with the library's messages.
     """
-    solver = Solver.__new__(Solver)
-    solver._setup(V, F)
-    # one solve: the Hodge step's per-mesh part is freed before the residual step (lower peak memory)
-    return solver._solve(curves, multiplicities, epsilon, reduced_residual, concurrency, verbose, False)
+    if curves is None and dual_chain is None:
+        raise ValueError("no curve: give curves, a dual_chain, or both")
+    vertices, offsets, m = _curve_arrays([] if curves is None else curves, multiplicities)
+    options = _options(epsilon, lp_solver, linear_solver, reduced_residual, filter_nonbounding_loops, concurrency,
+                       verbose)
+    r = _swn._winding_numbers(V, F, vertices, offsets, m, _dual_pairs(dual_chain), _boolean(soup, "soup"), options)
+    _warn(r["warnings"], 2)
+    r["edges"].flags.writeable = False
+    return WindingNumbers(W=r["W"], w=r["w"], edges=r["edges"], bounding=r["bounding"], G=r["G"], g=r["g"],
+                          report=r["report"], polygon_soup=r["polygon_soup"])
 
 
 def read_mesh(path):

@@ -92,3 +92,25 @@ def swn_tool():
     if not tool or not os.path.exists(tool):
         pytest.skip("the swn tool is not available (SWN_TOOL)")
     return tool
+
+
+def quad_torus(nu, nv, R=1.0, r=0.4):
+    """torus() with its quads unsplit: quad q = i nv + j is (idx(i, j), idx(i+1, j), idx(i+1, j+1), idx(i, j+1)),
+    made of the triangles 2q and 2q + 1 of torus()."""
+    V, F, idx = torus(nu, nv, R, r)
+    Q = np.array([[idx(i, j), idx(i + 1, j), idx(i + 1, j + 1), idx(i, j + 1)] for i in range(nu) for j in range(nv)])
+    return V, Q, idx
+
+
+def mobius_strip(n, R=1.0, w=0.3):
+    """A Möbius strip of n quads: vertices t_i = i and b_i = n + i across the strip at angle 2 pi i / n, quad i =
+    (t_i, b_i, b_{i+1}, t_{i+1}); the last quad is glued to the first with a half twist (t_n = b_0, b_n = t_0),
+    so that quads n - 1 and 0 traverse their common edge the same way."""
+    a = 2 * np.pi * np.arange(n) / n
+    across = np.column_stack([np.cos(a / 2) * np.cos(a), np.cos(a / 2) * np.sin(a), np.sin(a / 2)])
+    centre = np.column_stack([R * np.cos(a), R * np.sin(a), np.zeros(n)])
+    V = np.vstack([centre + w * across, centre - w * across])
+    t = lambda i: i if i < n else n + (i - n)     # t_n = b_0
+    b = lambda i: n + i if i < n else i - n       # b_n = t_0
+    Q = np.array([[t(i), b(i), b(i + 1), t(i + 1)] for i in range(n)])
+    return V, Q

@@ -167,3 +167,31 @@ def test_inputs_as_lists_and_other_dtypes():
     r = swn.winding_numbers(V.tolist(), F.tolist(), link.tolist())
     s = swn.winding_numbers(V.astype(np.float32), F.astype(np.uint16), link.astype(np.int32))
     assert (r.W == s.W).all() and r.W[F[:, 0] == 0].tolist() == [1] * 5
+
+
+@pytest.mark.parametrize("layout", ["C", "F", "strided"])
+@pytest.mark.parametrize("fdtype", [np.int64, np.int32, np.uint32])
+@pytest.mark.parametrize("vdtype", [np.float64, np.float32])
+def test_dtypes_and_memory_layouts_give_identical_results(vdtype, fdtype, layout):
+    nu, nv = 16, 8
+    V, F, idx = torus(nu, nv)
+    V = V.astype(np.float32).astype(np.float64)        # the same coordinates in either precision
+    curves = [[idx(2, j) for j in range(nv - 2)], torus_rectangle_loop(idx, 6, 11, 3, 6)[:-1]]
+    ref = swn.winding_numbers(V, F, curves)
+
+    def arrange(a, dtype):
+        if layout == "strided":                        # every other column of a wider array
+            wide = np.zeros((a.shape[0], 2 * a.shape[1]), dtype)
+            wide[:, ::2] = a
+            return wide[:, ::2]
+        return np.asarray(a, dtype=dtype, order=layout)
+
+    Vx, Fx = arrange(V, vdtype), arrange(F, fdtype)
+    assert Vx.dtype == vdtype and Fx.dtype == fdtype
+    r = swn.winding_numbers(Vx, Fx, curves)
+    assert (r.W == ref.W).all() and (r.G == ref.G).all() and (r.edges == ref.edges).all()
+    assert np.array_equal(r.w, ref.w, equal_nan=True) and np.array_equal(r.g, ref.g)
+    s = swn.Solver(Vx, Fx).solve(curves)
+    assert (s.W == ref.W).all() and np.array_equal(s.w, ref.w, equal_nan=True)
+    q = swn.winding_numbers(Vx, Fx, curves, soup=True)   # the soup route reads them alike
+    assert (q.W == ref.W).all() and (q.G == ref.G).all()

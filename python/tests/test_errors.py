@@ -13,20 +13,32 @@ TETRA_V = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], float)
 TETRA_F = np.array([[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]])
 
 
+# surfaces that are not oriented 2-manifold triangle meshes: Solver refuses them, winding_numbers() solves
+# them as polygon soups (test_soup.py)
 @pytest.mark.parametrize("V, F, message", [
     (TETRA_V, np.array([[0, 2, 1, 3]]), "face 0 has 4 vertices: only triangle meshes are supported"),
     (TETRA_V, [[0, 2, 1], [0, 1, 3], [0, 3, 2, 1], [1, 2, 3]], "face 2 has 4 vertices: only triangle meshes are supported"),
+    (TETRA_V, np.array([[0, 2, 1], [0, 2, 3]]), "faces 0 and 1 both traverse edge (0, 2) in the same direction"),
+    (np.vstack([TETRA_V, [[1, 1, 1]]]), np.vstack([TETRA_F, [[0, 2, 4]]]),
+     "non-manifold edge (0, 2): shared by more than two faces"),
+    (TETRA_V, np.array([[0, 1, 2], [0, 1, 2]]), "both traverse edge (0, 1) in the same direction"),
+])
+def test_solver_needs_an_oriented_manifold_triangle_mesh(V, F, message):
+    with pytest.raises(ValueError) as e:
+        swn.Solver(V, F)
+    assert message in str(e.value)
+
+
+@pytest.mark.parametrize("V, F, message", [
     (TETRA_V, [[0, 2, 1], [0, 1]], "face 1 has 2 vertices (a face needs at least 3)"),
+    (TETRA_V, np.array([[0, 1]]), "face 0 has 2 vertices (a face needs at least 3)"),
     (TETRA_V, np.array([[0, 2, 9]]), "face 0 refers to vertex 9 (0-based) but there are only 4 vertices"),
     (TETRA_V, np.array([[0, 2, -1]]), "face 0 refers to vertex -1 (a negative index)"),
     (TETRA_V, np.array([[0, 2, 2]]), "face 0 has a repeated vertex (0, 2, 2)"),
     (np.where(np.arange(12).reshape(4, 3) == 4, np.nan, TETRA_V), TETRA_F, "vertex 1 has a non-finite coordinate (NaN)"),
     (TETRA_V, np.zeros((0, 3), int), "the mesh has no faces"),
     (TETRA_V, [], "the mesh has no faces"),
-    (TETRA_V, np.array([[0, 2, 1], [0, 2, 3]]), "faces 0 and 1 both traverse edge (0, 2) in the same direction"),
-    (np.vstack([TETRA_V, [[1, 1, 1]]]), np.vstack([TETRA_F, [[0, 2, 4]]]),
-     "non-manifold edge (0, 2): shared by more than two faces"),
-    (TETRA_V, np.array([[0, 1, 2], [0, 1, 2]]), "both traverse edge (0, 1) in the same direction"),
+    (TETRA_V, [[0, 2, 1, 3], [0, 2, 9, 1]], "face 1 refers to vertex 9 (0-based) but there are only 4 vertices"),
     (np.array([[0, 0, 0], [1, 0, 0], [2, 0, 0], [0, 1, 0]], float), np.array([[0, 1, 3], [1, 2, 3], [0, 2, 1]]),
      "face 2 has zero area (degenerate triangle)"),
     (TETRA_V[:, :2], TETRA_F, "V must be an (n, 3) array of vertex coordinates, not of shape (4, 2)"),
@@ -57,7 +69,7 @@ def test_bad_curves():
         (np.array([[0, 11], [5, 5]]), "curves[1]: vertices 5 and 5 are not joined by an edge of the mesh"),
         (np.array([[0, 11, 5]]), "curves given as an array must be halfedges of shape (k, 2), not of shape (1, 3); give vertex polylines as a list of sequences"),
         ([0, 11, 5], "curves[0] must be a sequence of vertex indices (a polyline), not of shape ()"),
-        ([[0, 11, 5]], "epsilon must be positive and finite"),
+        ([[0, 11, 5]], "epsilon must be positive and finite, not -1"),
     ]
     for curves, message in cases:
         with pytest.raises(ValueError) as e:

@@ -14,9 +14,6 @@
 #include <CGAL/surface_winding_numbers.h>
 #include <CGAL/Surface_winding_numbers/polygon_soup_winding_numbers.h>
 #include <boost/property_map/property_map.hpp>
-#ifdef CGAL_USE_GLPK
-#include <CGAL/Surface_winding_numbers/GLPK_linear_program_traits.h>
-#endif
 
 #include "swn_io/atomic_output_dir.h"
 #include "swn_io/conforming_cut.h"
@@ -25,6 +22,7 @@
 #include "swn_io/json.h"
 #include "swn_io/read_curves.h"
 #include "swn_io/read_mesh.h"
+#include "swn_io/solver_choice.h"
 #include "swn_io/soup_curves.h"
 #include "swn_io/write_outputs.h"
 #include "swn_io/write_soup_outputs.h"
@@ -122,18 +120,10 @@ struct Usage_error : std::runtime_error
 
 struct Options
 {
-#ifdef CGAL_SWN_USE_LEMON
-  std::string lp_solver = "lemon";
-#else
-  std::string lp_solver = "glpk";
-#endif
+  std::string lp_solver = SIO::lp_solver_names().empty() ? std::string("none") : SIO::lp_solver_names().front();
   std::string mesh, curve, output_dir;
   SIO::Off_mesh_curves off_mesh;
-#ifdef CGAL_SWN_USE_CHOLMOD
-  std::string linear_solver = "cholmod";
-#else
-  std::string linear_solver = "ldlt";
-#endif
+  std::string linear_solver = SIO::linear_solver_names().front();
   double epsilon = 0.01;
   bool quiet = false, verbose = false, help = false, reduced_residual = false, sequential = false;
   bool unfiltered = false;   // --no-nonbounding-filter
@@ -205,27 +195,11 @@ Options parse_arguments(int argc, char** argv)
   }
   if(o.help) return o;
   if(o.mesh.empty()) throw Usage_error("no mesh file given");
-  {
-    std::vector<std::string> available;   // the residual solvers compiled in
-#ifdef CGAL_SWN_USE_LEMON
-    available.insert(available.end(), {"lemon", "lemon-simplex"});
-#endif
-#ifdef CGAL_USE_GLPK
-    available.push_back("glpk");
-#endif
-    if(std::find(available.begin(), available.end(), o.lp_solver) == available.end())
-    {
-      std::string names;
-      for(const std::string& n : available) names += (names.empty() ? "" : ", ") + n;
-      throw Usage_error("unknown --lp-solver '" + o.lp_solver + "' (available: " + (names.empty() ? "none" : names) + ")");
-    }
-  }
-#ifdef CGAL_SWN_USE_CHOLMOD
-  if(o.linear_solver != "ldlt" && o.linear_solver != "cholmod")
-    throw Usage_error("unknown --linear-solver '" + o.linear_solver + "' (available: cholmod, ldlt)");
-#else
-  if(o.linear_solver != "ldlt") throw Usage_error("unknown --linear-solver '" + o.linear_solver + "' (available: ldlt)");
-#endif
+  if(!SIO::is_one_of(o.lp_solver, SIO::lp_solver_names()))
+    throw Usage_error("unknown --lp-solver '" + o.lp_solver + "' (available: " + SIO::name_list(SIO::lp_solver_names()) + ")");
+  if(!SIO::is_one_of(o.linear_solver, SIO::linear_solver_names()))
+    throw Usage_error("unknown --linear-solver '" + o.linear_solver + "' (available: " +
+                      SIO::name_list(SIO::linear_solver_names()) + ")");
   return o;
 }
 
@@ -248,27 +222,11 @@ std::future<void> start_task(bool sequential, Task task)
 
 
 // Calls run(lp, sparse_solver) with the residual solver and the sparse Cholesky solver chosen on the command
-// line (among the compiled-in ones); returns what run returns.
+// line (checked by parse_arguments()); returns what run returns.
 template <class Run>
 bool with_solvers(const Options& opt, Run run)
 {
-  auto with_sparse_solver = [&](auto& lp) {
-#ifdef CGAL_SWN_USE_CHOLMOD
-    if(opt.linear_solver == "cholmod") return run(lp, SWN::internal::CHOLMOD_sparse_solver());
-#endif
-    return run(lp, SWN::internal::Eigen_LDLT_sparse_solver());
-  };
-#ifdef CGAL_SWN_USE_LEMON
-  SWN::LEMON_residual_solver::Options lemon_options;
-  if(opt.lp_solver == "lemon-simplex") lemon_options.algorithm = SWN::LEMON_residual_solver::Options::NETWORK_SIMPLEX;
-  SWN::LEMON_residual_solver lemon(lemon_options);
-  if(opt.lp_solver == "lemon" || opt.lp_solver == "lemon-simplex") return with_sparse_solver(lemon);
-#endif
-#ifdef CGAL_USE_GLPK
-  SWN::GLPK_linear_program_traits glpk;
-  if(opt.lp_solver == "glpk") return with_sparse_solver(glpk);
-#endif
-  return false;
+  return SIO::with_solvers(opt.lp_solver, opt.linear_solver, run);
 }
 
 typedef std::map<int, std::pair<std::size_t, double> > Histogram;   // label -> (faces, area)

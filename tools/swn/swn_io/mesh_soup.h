@@ -507,6 +507,31 @@ void triangle_soup_to_mesh(const Triangle_soup& soup, CGAL::Surface_mesh<Point>&
   build_oriented_mesh(soup, twin, mesh);
 }
 
+/*!
+  \brief builds `mesh` from `soup` if it is an oriented 2-manifold triangle mesh and returns ""; otherwise
+  leaves `mesh` empty and returns why the soup is not one (`FILE:LINE: problem` when the line is known), for
+  a solve as a polygon soup. Fills the statistics and warnings of `info` either way.
+  \throws Input_error on faces no route takes (out-of-range indices, repeated vertices, no face) and on
+  zero-area triangles of a triangle soup
+*/
+template <class Point>
+std::string soup_to_mesh_or_problem(const Triangle_soup& soup, CGAL::Surface_mesh<Point>& mesh, Mesh_read_info& info,
+                                    const std::string& file)
+{
+  mesh.clear();
+  internal::check_soup_faces(soup, file);
+  std::vector<std::uint32_t> twin;
+  std::size_t line = 0;
+  const std::string problem = internal::oriented_manifold_problem(soup, twin, line);
+  if(soup.polygons.empty())
+    internal::check_face_areas(soup, file);   // the library refuses zero-area triangles: say where, now
+  internal::soup_statistics(soup, info);
+  if(!problem.empty())
+    return line > 0 ? file + ":" + std::to_string(line) + ": " + problem : problem;
+  build_oriented_mesh(soup, twin, mesh);
+  return problem;
+}
+
 } // namespace IO
 } // namespace Surface_winding_numbers
 } // namespace CGAL

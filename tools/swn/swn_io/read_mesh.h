@@ -143,17 +143,7 @@ std::string read_mesh_or_soup(std::istream& is, const std::string& fmt, const st
   soup = Triangle_soup();
   mesh.clear();
   read_triangle_soup(is, fmt, filename, soup, info);
-  internal::check_soup_faces(soup, filename);
-  std::vector<std::uint32_t> twin;
-  std::size_t line = 0;
-  std::string problem = internal::oriented_manifold_problem(soup, twin, line);
-  if(soup.polygons.empty())
-    internal::check_face_areas(soup, filename);   // the library refuses zero-area triangles: say where, now
-  internal::soup_statistics(soup, info);
-  if(!problem.empty())
-    return line > 0 ? filename + ":" + std::to_string(line) + ": " + problem : problem;
-  build_oriented_mesh(soup, twin, mesh);
-  return problem;
+  return soup_to_mesh_or_problem(soup, mesh, info, filename);
 }
 
 /// `read_mesh_or_soup()` on the file `filename`, in the format its extension names
