@@ -18,6 +18,8 @@
 #include <cstddef>
 #include <string>
 #include <type_traits>
+#include <utility>
+#include <vector>
 
 namespace swn_python {
 
@@ -244,6 +246,25 @@ Solve_options solve_options(const py::dict& d)
   return o;
 }
 
+py::tuple chain_halfedges(const Mesh& mesh, const std::vector<int>& chain)
+{
+  std::vector<std::pair<Mesh::Halfedge_index, int>> curve;
+  for(Mesh::Edge_index e : mesh.edges())
+    if(const int c = chain[std::size_t(e)])
+      curve.emplace_back(c > 0 ? mesh.halfedge(e) : mesh.opposite(mesh.halfedge(e)), c > 0 ? c : -c);
+  py::array_t<std::int64_t> halfedges({py::ssize_t(curve.size()), py::ssize_t(2)});
+  py::array_t<std::int64_t> multiplicities(py::ssize_t(curve.size()));
+  auto h = halfedges.mutable_unchecked<2>();
+  auto m = multiplicities.mutable_unchecked<1>();
+  for(std::size_t k = 0; k < curve.size(); ++k)
+  {
+    h(py::ssize_t(k), 0) = std::int64_t(mesh.source(curve[k].first));
+    h(py::ssize_t(k), 1) = std::int64_t(mesh.target(curve[k].first));
+    m(py::ssize_t(k)) = curve[k].second;
+  }
+  return py::make_tuple(halfedges, multiplicities);
+}
+
 py::list string_list(const std::vector<std::string>& strings)
 {
   py::list l;
@@ -324,4 +345,5 @@ PYBIND11_MODULE(_swn, m)
 
   swn_python::bind_solver(m);
   swn_python::bind_readers(m);
+  swn_python::bind_curves(m);
 }

@@ -34,25 +34,12 @@ typedef IO::Cut_result<K::Point_3> Cut_result;
 py::dict curves_on_mesh_dict(const Cut_result& cut, const std::vector<std::string>& warnings)
 {
   const Mesh& mesh = cut.mesh;
-  std::vector<std::pair<Mesh::Halfedge_index, int>> curve;
-  for(Mesh::Edge_index e : mesh.edges())
-    if(const int c = cut.chain[std::size_t(e)])
-      curve.emplace_back(c > 0 ? mesh.halfedge(e) : mesh.opposite(mesh.halfedge(e)), c > 0 ? c : -c);
-  py::array_t<std::int64_t> halfedges({py::ssize_t(curve.size()), py::ssize_t(2)});
-  py::array_t<std::int64_t> multiplicities(py::ssize_t(curve.size()));
-  auto h = halfedges.mutable_unchecked<2>();
-  auto m = multiplicities.mutable_unchecked<1>();
-  for(std::size_t k = 0; k < curve.size(); ++k)
-  {
-    h(py::ssize_t(k), 0) = std::int64_t(mesh.source(curve[k].first));
-    h(py::ssize_t(k), 1) = std::int64_t(mesh.target(curve[k].first));
-    m(py::ssize_t(k)) = curve[k].second;
-  }
+  const py::tuple curve = chain_halfedges(mesh, cut.chain);
   py::dict d;
   d["V"] = vertex_array(mesh);
   d["F"] = face_array(mesh);
-  d["halfedges"] = halfedges;
-  d["multiplicities"] = multiplicities;
+  d["halfedges"] = curve[0];
+  d["multiplicities"] = curve[1];
   py::dict info;
   info["input_vertices"] = cut.input_vertices;
   info["input_faces"] = cut.input_faces;

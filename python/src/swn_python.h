@@ -4,7 +4,7 @@
 // The Python module `swn._swn`: what its source files share. module.cpp converts between numpy arrays,
 // soups and a Surface_mesh, registers the exceptions and binds `_winding_numbers()` (either route),
 // solver.cpp binds the solver on a triangle mesh, soup.cpp solves polygon soups, readers.cpp binds the
-// tool's mesh and curve readers and its conforming cut.
+// tool's mesh and curve readers and its conforming cut, curves.cpp the library's curves off the mesh.
 
 #ifndef SWN_PYTHON_H
 #define SWN_PYTHON_H
@@ -54,6 +54,9 @@ py::array_t<std::int64_t> face_array(const Mesh& mesh);
 py::array_t<std::int64_t> edge_array(const Mesh& mesh);
 /// a Python list of str
 py::list string_list(const std::vector<std::string>& strings);
+/// the chain `chain[e]` on the edges `e` of `mesh` (by edge index, signed along `halfedge(e)`) as halfedges
+/// (k x 2 int64 vertex pairs, along the curve) and their multiplicities (k int64, positive), in edge order
+py::tuple chain_halfedges(const Mesh& mesh, const std::vector<int>& chain);
 
 /// the settings of a solve (validated by swn/__init__.py): the library's named parameters, and the
 /// residual and sparse solvers by the names of `IO::lp_solver_names()` and `IO::linear_solver_names()`
@@ -99,6 +102,8 @@ py::dict solve_on_soup(const Triangle_soup& soup, const Curve_arrays& curves, co
 void bind_solver(py::module_& m);
 /// `read_mesh`, `read_curve`, `load` (readers.cpp)
 void bind_readers(py::module_& m);
+/// `_polylines_to_chain`, `_stamp_polylines` (curves.cpp)
+void bind_curves(py::module_& m);
 
 } // namespace swn_python
 

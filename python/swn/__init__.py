@@ -28,8 +28,8 @@ import numpy as np
 from . import _swn
 
 __version__ = _swn.__version__
-__all__ = ["winding_numbers", "Solver", "WindingNumbers", "read_mesh", "read_curve", "load", "CurveOnMesh",
-           "InputError", "MeshWarning", "LP_SOLVERS", "LINEAR_SOLVERS"]
+__all__ = ["winding_numbers", "Solver", "WindingNumbers", "read_mesh", "read_curve", "load", "polylines_to_chain",
+           "stamp_polylines", "CurveOnMesh", "InputError", "MeshWarning", "LP_SOLVERS", "LINEAR_SOLVERS"]
 
 #: the residual solvers compiled in (``lp_solver=``), the default first: "lemon" (multilevel minimum-cost
 #: flow with an optimality certificate), "lemon-simplex" (LEMON's network simplex), "glpk" (simplex)
@@ -65,13 +65,15 @@ class WindingNumbers:
 
 @dataclass(eq=False)
 class CurveOnMesh:
-    """Curves read from files, on the edges of the mesh they live on (``read_curve()``, ``load()``)."""
+    """Curves put on the edges of the mesh they live on: read from files (``read_curve()``, ``load()``) or
+    drawn off the mesh (``polylines_to_chain()``, ``stamp_polylines()``)."""
 
     V: np.ndarray               #: (n', 3) the mesh's vertices: the input's first, then those of the cut
     F: np.ndarray               #: (m', 3) its faces: the input's first (each cut face keeps one piece), then the new
     halfedges: np.ndarray       #: (k, 2) int64: the curves' halfedges (source, target)
     multiplicities: np.ndarray  #: (k,) int64: how many times the curves run along each of them (positive)
-    info: dict                  #: vertices and faces added by the cut and the refinement, the reader's warnings
+    info: dict                  #: vertices and faces added by the cut and the refinement, warnings, ...
+    face_origin: np.ndarray = None  #: (m',) int64: the input face every face is a piece of (curves off the mesh)
 
 
 def _warn(messages, stacklevel):
@@ -259,7 +261,7 @@ def read_mesh(path):
 def _curve_on_mesh(d):
     _warn(d["info"]["warnings"], 3)
     return CurveOnMesh(V=d["V"], F=d["F"], halfedges=d["halfedges"], multiplicities=d["multiplicities"],
-                       info=d["info"])
+                       info=d["info"], face_origin=d.get("face_origin"))
 
 
 def read_curve(path, V, F, *, refine_short_pieces=True, minimum_piece_edges=8):
@@ -286,3 +288,58 @@ def load(mesh_path, curve_path=None, *, refine_short_pieces=True, minimum_piece_
     curve_path = None if curve_path is None else os.fspath(curve_path)
     return _curve_on_mesh(_swn._load(os.fspath(mesh_path), curve_path, bool(refine_short_pieces),
                                      int(minimum_piece_edges)))
+
+
+def _cut_settings(projection_tolerance, refine_short_pieces, minimum_piece_edges):
+    if projection_tolerance is not None:
+        t = float(projection_tolerance)
+        if not np.isfinite(t) or t <= 0:
+            raise ValueError(f"projection_tolerance must be positive and finite, not {projection_tolerance!r}")
+        projection_tolerance = t
+    if isinstance(minimum_piece_edges, (bool, np.bool_)) or int(minimum_piece_edges) != minimum_piece_edges \
+            or minimum_piece_edges < 1:
+        raise ValueError(f"minimum_piece_edges must be a positive integer, not {minimum_piece_edges!r}")
+    return projection_tolerance, _boolean(refine_short_pieces, "refine_short_pieces"), int(minimum_piece_edges)
+
+
+def polylines_to_chain(V, F, polylines, *, projection_tolerance=None, refine_short_pieces=True, minimum_piece_edges=8):
+    """Puts 3D polylines drawn off the triangle mesh (V, F) onto its surface (the library's ``polylines_to_chain()``).
+
+    ``polylines``: a sequence of (k, 3) point arrays (a polyline whose last point equals its first is closed).
+    Every point is projected onto the surface (points farther than ``projection_tolerance``, default the mean
+    edge length, make gaps); consecutive points are joined by a straight walk through the faces; the mesh
+    is cut so that the curves run along edges (``refine_short_pieces``, ``minimum_piece_edges`` as for
+    ``read_curve()``). Returns a ``CurveOnMesh``: the cut mesh, the curves' halfedges and multiplicities,
+    ``face_origin`` (the input face of every face) and ``info`` (``points``, ``points_off_surface``,
+    ``failed_walks``, ``dropped_crossings``, ``curves``, ``pieces``, the cut's counts, ``warnings``).
+    Raises ``ValueError`` on a bad mesh or polyline and when no curve lands on the surface.
+    """
+    settings = _cut_settings(projection_tolerance, refine_short_pieces, minimum_piece_edges)
+    return _curve_on_mesh(_swn._polylines_to_chain(V, F, polylines, *settings))
+
+
+def stamp_polylines(V, F, drawing, *, direction=(0, 0, -1), frame=None, fill=0.8, projection_tolerance=None,
+                    refine_short_pieces=True, minimum_piece_edges=8):
+    """Stamps a 2D drawing onto the triangle mesh (V, F) (the library's ``stamp_polylines()``), then puts it on
+    the edges as ``polylines_to_chain()`` does.
+
+    ``drawing``: an SVG file (``str`` or path: paths with M/L/H/V/Z, polyline, polygon, line, as the tool's
+    ``--stamp``) or a sequence of (k, 2) point arrays. ``frame``: ``(origin, x_axis, y_axis, direction)``,
+    four 3-vectors: the drawing's point (x, y) is shot from ``origin + x x_axis + y y_axis`` along
+    ``direction`` and lands where the ray first hits the surface from the front. Without a frame, the one
+    that shows the drawing to a viewer looking along ``direction``, x to the right and y downwards (as in
+    SVG), centred on the mesh and covering the fraction ``fill`` of its extent (``fit_stamp_frame()``); the
+    frame used is ``info["frame"]``. Returns a ``CurveOnMesh`` with ``face_origin``.
+    """
+    settings = _cut_settings(projection_tolerance, refine_short_pieces, minimum_piece_edges)
+    if isinstance(drawing, (str, os.PathLike)):
+        drawing = os.fspath(drawing)
+    if frame is not None:
+        frame = np.asarray(frame, dtype=float)
+        if frame.shape != (4, 3):
+            raise ValueError(f"frame must be four 3-vectors (origin, x_axis, y_axis, direction), not of shape {frame.shape}")
+        frame = [list(v) for v in frame]
+    direction = np.asarray(direction, dtype=float)
+    if direction.shape != (3,):
+        raise ValueError(f"direction must be three numbers, not of shape {direction.shape}")
+    return _curve_on_mesh(_swn._stamp_polylines(V, F, drawing, frame, list(direction), float(fill), *settings))

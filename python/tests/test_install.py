@@ -37,3 +37,22 @@ def test_pip_install_into_a_venv(tmp_path):
     p = subprocess.run([python, str(EXAMPLE), str(DATA / "swn-demo")], env=env, cwd=tmp_path, capture_output=True,
                        text=True)
     assert p.returncode == 0, p.stdout + p.stderr
+
+
+def test_meshio_example(tmp_path):
+    meshio = pytest.importorskip("meshio")   # Debian's python3-meshio (scripts/install-deps)
+    import numpy as np
+    from conftest import quad_torus, torus_rectangle_loop
+    nu, nv = 16, 8
+    V, Q, idx = quad_torus(nu, nv)
+    loop = torus_rectangle_loop(idx, 3, 7, 2, 5)
+    segments = np.column_stack([loop[:-1], loop[1:]])
+    source, out = tmp_path / "torus.vtu", tmp_path / "labels.vtu"
+    meshio.write(source, meshio.Mesh(V, [("quad", Q), ("line", segments)]))
+    p = subprocess.run([sys.executable, str(REPO / "python" / "examples" / "meshio_labels.py"), str(source), str(out)],
+                       capture_output=True, text=True)
+    assert p.returncode == 0, p.stdout + p.stderr
+    assert "solved as a polygon soup (face 0 has 4 vertices)" in p.stdout
+    labels = meshio.read(out).cell_data["swn_W"]
+    inside = np.array([3 <= q // nv < 7 and 2 <= q % nv < 5 for q in range(len(Q))])
+    assert (labels[0] == inside).all() and (labels[1] == 0).all()
