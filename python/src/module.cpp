@@ -243,6 +243,8 @@ Solve_options solve_options(const py::dict& d)
   o.filter_nonbounding_loops = d["filter_nonbounding_loops"].cast<bool>();
   o.concurrency = d["concurrency"].cast<bool>();
   o.verbose = d["verbose"].cast<bool>();
+  o.anchor_face = d["anchor_face"].cast<std::int64_t>();
+  o.confidence = d["confidence"].cast<bool>();
   return o;
 }
 

@@ -30,7 +30,7 @@ namespace {
 typedef IO::Cut_result<K::Point_3> Cut_result;
 
 // the curves on the edges of the cut mesh as halfedges (k x 2 vertex pairs, along the curve) with their
-// multiplicities (positive), in the order of the mesh's edges
+// multiplicities (positive), in the order of the mesh's edges, and the input face of every face
 py::dict curves_on_mesh_dict(const Cut_result& cut, const std::vector<std::string>& warnings)
 {
   const Mesh& mesh = cut.mesh;
@@ -40,6 +40,7 @@ py::dict curves_on_mesh_dict(const Cut_result& cut, const std::vector<std::strin
   d["F"] = face_array(mesh);
   d["halfedges"] = curve[0];
   d["multiplicities"] = curve[1];
+  d["face_origin"] = array_of(std::vector<std::int64_t>(cut.face_origin.begin(), cut.face_origin.end()));
   py::dict info;
   info["input_vertices"] = cut.input_vertices;
   info["input_faces"] = cut.input_faces;

@@ -4,13 +4,15 @@
 // `swn._swn.Solver`: a Surface_mesh built from (V, F) and the package's Surface_winding_numbers_solver on
 // it, with the sparse solver chosen by name; `_solve()` takes curves as vertex polylines (flattened, with
 // offsets and one multiplicity each) and the settings, and returns the outputs as numpy arrays, in the
-// order of the input's faces and of the mesh's edges. `solve_on_mesh()` is the same for one solve.
+// order of the input's faces and of the mesh's edges, and the per-region confidence when asked.
+// `solve_on_mesh()` is the same for one solve.
 
 #include "swn_python.h"
 
 #include "swn_io/solver_choice.h"
 
 #include <CGAL/surface_winding_numbers.h>
+#include <CGAL/Surface_winding_numbers/Label_confidence.h>
 
 #include <boost/property_map/property_map.hpp>
 
@@ -33,11 +35,13 @@ namespace IO = CGAL::Surface_winding_numbers::IO;
 
 namespace {
 
-// the per-face, per-corner and per-edge outputs of a solve on a Surface_mesh
+// the per-face, per-corner and per-edge outputs of a solve on a Surface_mesh, and the confidence when asked
 struct Mesh_outputs
 {
-  std::vector<int> labels, G, bounding;
-  std::vector<double> g, w;
+  std::vector<int> labels, G, bounding, second_best;
+  std::vector<double> g, w, face_cost;
+  std::vector<std::size_t> region;
+  SWN::Label_confidence confidence;
   SWN::Solve_report report;
 };
 
@@ -62,11 +66,11 @@ public:
   bool solve(const std::vector<int>& chain, const Solve_options& o, bool keep, Mesh_outputs& out) override
   {
     const auto ei = get(boost::edge_index, mesh_);
+    const auto fi = get(boost::face_index, mesh_);
     auto edge_map = [&](auto& v) { return boost::make_iterator_property_map(v.begin(), ei); };
+    const Mesh::Face_index anchor = o.anchor_face < 0 ? Mesh::null_face() : Mesh::Face_index(Mesh::size_type(o.anchor_face));
     return IO::with_lp_solver(o.lp_solver, [&](auto& lp) {
-      return solver_.solve(
-        boost::make_iterator_property_map(chain.begin(), ei),
-        boost::make_iterator_property_map(out.labels.begin(), get(boost::face_index, mesh_)),
+      const auto np =
         SWN::parameters::nonbounding_chain_map(edge_map(out.G),
         SWN::parameters::nonbounding_chain_real_map(edge_map(out.g),
         SWN::parameters::bounding_chain_map(edge_map(out.bounding),
@@ -74,11 +78,19 @@ public:
         SWN::parameters::epsilon(o.epsilon,
         SWN::parameters::use_reduced_residual(o.reduced_residual,
         SWN::parameters::filter_nonbounding_loops(o.filter_nonbounding_loops,
+        SWN::parameters::label_anchor_face(anchor,
         SWN::parameters::concurrency(o.concurrency,
         SWN::parameters::keep_hodge_factorization(keep,
         SWN::parameters::lp_solver(std::ref(lp),
-        SWN::parameters::report(std::ref(out.report))))))))))))
-          .verbose(o.verbose));
+        SWN::parameters::report(std::ref(out.report))))))))))))).verbose(o.verbose);
+      const auto labels = boost::make_iterator_property_map(out.labels.begin(), fi);
+      if(!o.confidence) return solver_.solve(boost::make_iterator_property_map(chain.begin(), ei), labels, np);
+      // the confidence outputs (computed only when asked: a second instantiation of the solve)
+      return solver_.solve(boost::make_iterator_property_map(chain.begin(), ei), labels,
+                           SWN::parameters::label_confidence(std::ref(out.confidence),
+                           SWN::parameters::confidence_map(boost::make_iterator_property_map(out.face_cost.begin(), fi),
+                           SWN::parameters::region_map(boost::make_iterator_property_map(out.region.begin(), fi),
+                           SWN::parameters::second_best_label_map(boost::make_iterator_property_map(out.second_best.begin(), fi), np)))));
     });
   }
 
@@ -133,6 +145,34 @@ void add_curves(const Mesh& mesh, const Curve_arrays& curves, std::vector<int>& 
     if(m != 0 && !halfedges.empty()) SWN::add_halfedges_to_chain(mesh, halfedges, chain_map, m);
 }
 
+// the confidence outputs as a dict: per face (cost of its region's flip, region, second-best label) and per region
+py::dict confidence_dict(const SWN::Label_confidence& c, const std::vector<double>& face_cost,
+                         const std::vector<std::size_t>& region, const std::vector<int>& second_best)
+{
+  py::list regions;
+  for(const SWN::Label_region& r : c.regions)
+  {
+    py::dict d;
+    d["label"] = r.label;
+    d["faces"] = r.faces;
+    d["area"] = r.area;
+    d["component"] = r.component;
+    d["flip_cost"] = r.flip_cost;
+    d["flip_delta"] = r.flip_delta;
+    d["boundary_length"] = r.boundary_length;
+    d["largest_in_component"] = r.largest_in_component;
+    regions.append(d);
+  }
+  py::dict d;
+  d["face_cost"] = array_of(face_cost);
+  d["region"] = array_of(std::vector<std::int64_t>(region.begin(), region.end()));
+  d["regions"] = regions;
+  d["second_best_W"] = array_of(second_best);
+  d["second_best_region"] = c.second_best_region == std::size_t(-1) ? py::object(py::none()) : py::object(py::int_(c.second_best_region));
+  d["second_best_cost"] = c.second_best_cost;
+  return d;
+}
+
 // one solve of the curves on `mesh` by `solver`, its outputs as numpy arrays (W per face, w per corner,
 // the chains per edge) and the report
 py::dict solve(Mesh_solver& solver, const Mesh& mesh, const Curve_arrays& curves, const Solve_options& options,
@@ -147,6 +187,12 @@ py::dict solve(Mesh_solver& solver, const Mesh& mesh, const Curve_arrays& curves
   out.bounding.assign(ne, 0);
   out.g.assign(ne, 0.);
   out.w.assign(mesh.number_of_halfedges(), std::numeric_limits<double>::quiet_NaN());
+  if(options.confidence)
+  {
+    out.second_best.assign(nf, 0);
+    out.face_cost.assign(nf, 0.);
+    out.region.assign(nf, 0);
+  }
   bool ok = false;
   {
     py::gil_scoped_release release;
@@ -171,6 +217,7 @@ py::dict solve(Mesh_solver& solver, const Mesh& mesh, const Curve_arrays& curves
   result["G"] = array_of(out.G);
   result["g"] = array_of(out.g);
   result["report"] = report_dict(out.report);
+  if(options.confidence) result["confidence"] = confidence_dict(out.confidence, out.face_cost, out.region, out.second_best);
   return result;
 }
 

@@ -130,6 +130,8 @@ std::vector<Vertex_pair> curve_edges(const Curve_arrays& curves, const Soup_edge
 py::dict solve_on_soup(const Triangle_soup& soup, const Curve_arrays& curves, const Index_array& dual_pairs,
                        const Solve_options& o)
 {
+  if(o.confidence)
+    throw py::value_error("confidence: the library computes it on triangle meshes only, not on polygon soups");
   const std::size_t nf = IO::number_of_faces(soup);
   const bool triangles = soup.polygons.empty();
   std::vector<std::size_t> start(nf + 1, 0);   // the first corner of every face
@@ -168,9 +170,10 @@ py::dict solve_on_soup(const Triangle_soup& soup, const Curve_arrays& curves, co
           SWN::parameters::epsilon(o.epsilon,
           SWN::parameters::use_reduced_residual(o.reduced_residual,
           SWN::parameters::filter_nonbounding_loops(o.filter_nonbounding_loops,
+          SWN::parameters::label_anchor_face(o.anchor_face < 0 ? std::size_t(-1) : std::size_t(o.anchor_face),
           SWN::parameters::concurrency(o.concurrency,
           SWN::parameters::lp_solver(std::ref(lp),
-          SWN::parameters::report(std::ref(report))))))))))))
+          SWN::parameters::report(std::ref(report)))))))))))))
             .verbose(o.verbose).sparse_linear_solver(sparse_solver));
       });
     };

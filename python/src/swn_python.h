@@ -65,6 +65,10 @@ struct Solve_options
   double epsilon = 0.01;
   std::string lp_solver, linear_solver;
   bool reduced_residual = false, filter_nonbounding_loops = true, concurrency = true, verbose = false;
+  /// the face whose label is 0 in its component (named parameter label_anchor_face); -1: none
+  std::int64_t anchor_face = -1;
+  /// compute the per-region confidence (named parameters label_confidence, region_map, ...)
+  bool confidence = false;
 };
 /// the options of the dict `d` (keys: the fields' names)
 Solve_options solve_options(const py::dict& d);

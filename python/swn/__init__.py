@@ -29,7 +29,8 @@ from . import _swn
 
 __version__ = _swn.__version__
 __all__ = ["winding_numbers", "Solver", "WindingNumbers", "read_mesh", "read_curve", "load", "polylines_to_chain",
-           "stamp_polylines", "CurveOnMesh", "InputError", "MeshWarning", "LP_SOLVERS", "LINEAR_SOLVERS"]
+           "stamp_polylines", "CurveOnMesh", "LabelConfidence", "InputError", "MeshWarning", "LP_SOLVERS",
+           "LINEAR_SOLVERS"]
 
 #: the residual solvers compiled in (``lp_solver=``), the default first: "lemon" (multilevel minimum-cost
 #: flow with an optimality certificate), "lemon-simplex" (LEMON's network simplex), "glpk" (simplex)
@@ -49,6 +50,25 @@ class MeshWarning(UserWarning):
 
 
 @dataclass(eq=False)
+class LabelConfidence:
+    """How close the runner-up of every region's label is (the library's ``Label_confidence``, paper Eq. 11).
+
+    A region is a maximal set of faces connected across edges where the curves, G and the jump of W are all
+    zero; its flip cost is the growth of Eq. 11's objective (lengths in mean interior edge lengths, input
+    edges weighted by epsilon) when its label alone changes by one, infinite if neither direction is
+    feasible. The second-best labeling flips the cheapest region that is not the largest of its component
+    and covers at least 0.5 % of the area.
+    """
+
+    face_cost: np.ndarray     #: (m,) float64: the flip cost of every face's region
+    region: np.ndarray        #: (m,) int64: the region of every face (an index into regions)
+    regions: list             #: per region, a dict: label, faces, area, component, flip_cost, flip_delta, boundary_length, largest_in_component
+    second_best_W: np.ndarray  #: (m,) int32: the second-best labeling (W where there is none)
+    second_best_region: int   #: the region it flips, or None
+    second_best_cost: float   #: its flip cost (inf when there is none)
+
+
+@dataclass(eq=False)
 class WindingNumbers:
     """The outputs of a solve (numpy arrays) and its report."""
 
@@ -61,6 +81,7 @@ class WindingNumbers:
     g: np.ndarray         #: (E,) float64: the real-valued nonbounding chain
     report: dict          #: what the solve did: sizes, topology, residual problem, times in seconds
     polygon_soup: str = ""  #: why it was solved as a polygon soup ("" when solved as a triangle mesh)
+    confidence: LabelConfidence = None  #: the per-region confidence (``confidence=True``; None otherwise)
 
 
 @dataclass(eq=False)
@@ -73,7 +94,7 @@ class CurveOnMesh:
     halfedges: np.ndarray       #: (k, 2) int64: the curves' halfedges (source, target)
     multiplicities: np.ndarray  #: (k,) int64: how many times the curves run along each of them (positive)
     info: dict                  #: vertices and faces added by the cut and the refinement, warnings, ...
-    face_origin: np.ndarray = None  #: (m',) int64: the input face every face is a piece of (curves off the mesh)
+    face_origin: np.ndarray     #: (m',) int64: the input face every face is a piece of (itself for faces not cut)
 
 
 def _warn(messages, stacklevel):
@@ -130,8 +151,12 @@ def _choice(value, name, allowed):
     return value
 
 
-def _options(epsilon, lp_solver, linear_solver, reduced_residual, filter_nonbounding_loops, concurrency, verbose):
+def _options(epsilon, lp_solver, linear_solver, reduced_residual, filter_nonbounding_loops, concurrency, verbose,
+             anchor_face=None, confidence=False):
     """The settings of a solve, checked: ValueError naming the setting and its allowed values."""
+    if anchor_face is not None and (isinstance(anchor_face, (bool, np.bool_)) or not isinstance(anchor_face, (int, np.integer))
+                                    or anchor_face < 0):
+        raise ValueError(f"anchor_face must be a face index (an integer >= 0) or None, not {anchor_face!r}")
     try:
         eps = float(epsilon)
     except (TypeError, ValueError):
@@ -142,7 +167,15 @@ def _options(epsilon, lp_solver, linear_solver, reduced_residual, filter_nonboun
             "linear_solver": _choice(linear_solver, "linear_solver", LINEAR_SOLVERS),
             "reduced_residual": _boolean(reduced_residual, "reduced_residual"),
             "filter_nonbounding_loops": _boolean(filter_nonbounding_loops, "filter_nonbounding_loops"),
-            "concurrency": _boolean(concurrency, "concurrency"), "verbose": _boolean(verbose, "verbose")}
+            "concurrency": _boolean(concurrency, "concurrency"), "verbose": _boolean(verbose, "verbose"),
+            "anchor_face": -1 if anchor_face is None else int(anchor_face), "confidence": _boolean(confidence, "confidence")}
+
+
+def _result(r, edges):
+    c = r.get("confidence")
+    return WindingNumbers(W=r["W"], w=r["w"], edges=edges, bounding=r["bounding"], G=r["G"], g=r["g"],
+                          report=r["report"], polygon_soup=r.get("polygon_soup", ""),
+                          confidence=None if c is None else LabelConfidence(**c))
 
 
 def _dual_pairs(dual_chain):
@@ -195,7 +228,7 @@ class Solver:
         return self._solver.number_of_faces
 
     def solve(self, curves, multiplicities=None, *, epsilon=0.01, lp_solver=None, reduced_residual=False,
-              filter_nonbounding_loops=True, concurrency=True, verbose=False):
+              filter_nonbounding_loops=True, anchor_face=None, confidence=False, concurrency=True, verbose=False):
         """Winding numbers of ``curves`` (halfedges (k, 2) or vertex polylines) on this mesh.
 
         The settings are those of ``winding_numbers()`` (the sparse solver is the solver's). Returns a
@@ -205,15 +238,13 @@ class Solver:
         """
         vertices, offsets, m = _curve_arrays(curves, multiplicities)
         options = _options(epsilon, lp_solver, LINEAR_SOLVERS[0], reduced_residual, filter_nonbounding_loops,
-                           concurrency, verbose)
-        r = self._solver._solve(vertices, offsets, m, options)
-        return WindingNumbers(W=r["W"], w=r["w"], edges=self.edges, bounding=r["bounding"], G=r["G"], g=r["g"],
-                              report=r["report"])
+                           concurrency, verbose, anchor_face, confidence)
+        return _result(self._solver._solve(vertices, offsets, m, options), self.edges)
 
 
 def winding_numbers(V, F, curves=None, multiplicities=None, *, dual_chain=None, soup=False, epsilon=0.01,
                     lp_solver=None, linear_solver=None, reduced_residual=False, filter_nonbounding_loops=True,
-                    concurrency=True, verbose=False):
+                    anchor_face=None, confidence=False, concurrency=True, verbose=False):
     """Winding numbers of ``curves`` (and of ``dual_chain``) on the surface (V, F): one solve.
 
     ``F``: an (m, k) array or a sequence of polygons. An oriented 2-manifold triangle mesh is solved as a
@@ -227,7 +258,9 @@ def winding_numbers(V, F, curves=None, multiplicities=None, *, dual_chain=None, 
     across the curve, paper Eq. 11), ``lp_solver`` (one of ``LP_SOLVERS``), ``linear_solver`` (one of
     ``LINEAR_SOLVERS``), ``reduced_residual`` (the paper's Sec. 6 approximation),
     ``filter_nonbounding_loops`` (``False``: labels are the rounded jump-harmonic function, paper Fig. 27),
-    ``concurrency`` (``False``: the calling thread only), ``verbose`` (the steps on stderr).
+    ``anchor_face`` (a face whose label is 0 in its component, instead of the label covering the largest
+    area), ``confidence`` (``True``: the result's ``confidence``, a ``LabelConfidence``; triangle meshes
+    only), ``concurrency`` (``False``: the calling thread only), ``verbose`` (the steps on stderr).
 
     Returns a ``WindingNumbers``. Raises ``ValueError`` on bad input and bad settings and ``RuntimeError``
     when the solver fails, with the library's messages.
@@ -236,12 +269,11 @@ def winding_numbers(V, F, curves=None, multiplicities=None, *, dual_chain=None, 
         raise ValueError("no curve: give curves, a dual_chain, or both")
     vertices, offsets, m = _curve_arrays([] if curves is None else curves, multiplicities)
     options = _options(epsilon, lp_solver, linear_solver, reduced_residual, filter_nonbounding_loops, concurrency,
-                       verbose)
+                       verbose, anchor_face, confidence)
     r = _swn._winding_numbers(V, F, vertices, offsets, m, _dual_pairs(dual_chain), _boolean(soup, "soup"), options)
     _warn(r["warnings"], 2)
     r["edges"].flags.writeable = False
-    return WindingNumbers(W=r["W"], w=r["w"], edges=r["edges"], bounding=r["bounding"], G=r["G"], g=r["g"],
-                          report=r["report"], polygon_soup=r["polygon_soup"])
+    return _result(r, r["edges"])
 
 
 def read_mesh(path):
@@ -261,7 +293,7 @@ def read_mesh(path):
 def _curve_on_mesh(d):
     _warn(d["info"]["warnings"], 3)
     return CurveOnMesh(V=d["V"], F=d["F"], halfedges=d["halfedges"], multiplicities=d["multiplicities"],
-                       info=d["info"], face_origin=d.get("face_origin"))
+                       info=d["info"], face_origin=d["face_origin"])
 
 
 def read_curve(path, V, F, *, refine_short_pieces=True, minimum_piece_edges=8):

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 import swn
-from conftest import grid_disk, torus
+from conftest import DATA, grid_disk, torus
 
 # A parallelogram with its corners on vertices of grid_disk(10), its sides across the edges (inside a face a
 # curve is the chord between the points where it crosses the face's border: corners inside faces are cut);
@@ -23,7 +23,8 @@ def check_pieces(c, V, F):
     assert c.face_origin.shape == (len(c.F),) and c.face_origin.dtype == np.int64
     assert (c.face_origin[:len(F)] == np.arange(len(F))).all() and c.face_origin.max() < len(F)
     assert np.allclose(np.bincount(c.face_origin, areas(c.V, c.F), len(F)), areas(V, F), rtol=1e-12, atol=1e-15)
-    assert c.info["cut_vertices"] > 0 and len(c.V) == len(V) + c.info["cut_vertices"] + c.info["refinement_vertices"]
+    added = c.info["cut_vertices"] + c.info["refinement_vertices"]
+    assert added > 0 and len(c.V) == len(V) + added
 
 
 def inside_area(c, label):
@@ -77,6 +78,13 @@ def test_3d_polyline_loop_around_the_tube_is_nonbounding():
     w = swn.winding_numbers(c.V, c.F, c.halfedges, c.multiplicities)
     assert (w.W == 0).all() and (w.bounding == 0).all()
     assert np.count_nonzero(w.G) == len(c.halfedges) >= nv     # the loop itself, closed: G is the curve
+
+
+def test_readers_give_the_input_face_of_every_face():
+    V, F = swn.read_mesh(DATA / "swn-demo" / "torus.obj")
+    c = swn.load(DATA / "swn-demo" / "torus.obj", DATA / "swn-demo" / "torus-phi.txt")
+    check_pieces(c, V, F)
+    assert (swn.read_curve(DATA / "swn-demo" / "torus-phi.txt", V, F).face_origin == c.face_origin).all()
 
 
 def test_errors():
