@@ -1,5 +1,5 @@
 // Curves off the mesh made dependable (issue 42): the input face of every piece of the cut, and the
-// reproducers of test/data/curves_off_mesh (README there) through the library.
+// reproducers of test/data/fuzz_curves (README there) through the library.
 
 #include "swn_io/read_polylines.h"
 
@@ -80,7 +80,7 @@ TEST(FaceOrigin, ConformingCutAndPolylinesToChainTileEveryInputFace)
   }
 }
 
-const std::string repro = tdata + "curves_off_mesh/";
+const std::string repro = tdata + "fuzz_curves/";
 typedef std::vector<std::vector<Point> > Polylines;
 typedef std::vector<std::vector<std::array<double, 2> > > Drawing;
 
@@ -182,10 +182,10 @@ void expect_same_up_to_scale(const Outcome& unit, const Outcome& scaled)
 
 TEST(CurvesOffMesh, StrokeThereAndBackNeitherCrashesNorMakesADegenerateFace)
 {
-  for(const std::string file : {"asan_crash_segv_polylines_there_and_back.obj", "msg_polylines_there_and_back_cut_zero_area.obj",
+  for(const std::string file : {"asan_crash_segv_polylines_there_and_back.polylines.obj", "msg_polylines_there_and_back_cut_zero_area.polylines.obj",
                                  "asan_crash_segv_stamp_there_and_back.svg"})
   {
-    Mesh m = read(repro + "grid10.obj");
+    Mesh m = read(repro + "grid10.offmesh.obj");
     Polylines strokes;
     if(file.back() == 'g')
     {
@@ -203,7 +203,7 @@ TEST(CurvesOffMesh, StrokeThereAndBackNeitherCrashesNorMakesADegenerateFace)
 
 TEST(CurvesOffMesh, StampRefusesNonFiniteInputAndHugeDirectionsAreDirections)
 {
-  const Mesh m = read(repro + "grid10.obj");
+  const Mesh m = read(repro + "grid10.offmesh.obj");
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const Drawing square{{{10, 10}, {90, 10}, {90, 90}, {10, 90}, {10, 10}}};
   const K::Vector_3 down(0, 0, -1);
@@ -239,7 +239,7 @@ TEST(CurvesOffMesh, StampRefusesNonFiniteInputAndHugeDirectionsAreDirections)
 
 TEST(CurvesOffMesh, OrientEdgeSelectionRefusesEdgesNotOfTheMesh)
 {
-  Mesh m = read(repro + "grid10.obj");
+  Mesh m = read(repro + "grid10.offmesh.obj");
   auto chain = m.add_property_map<Mesh::Edge_index, int>("e:chain", 0).first;
   for(const Mesh::Edge_index bad : {Mesh::Edge_index(100000), Mesh::Edge_index()})
   {
@@ -256,14 +256,14 @@ TEST(CurvesOffMesh, PolylinesOnScaledCopiesGiveTheUnitAnswer)
   {
     Mesh tiny = read(repro + "crash_sigfpe_polylines_tiny_scale.off");
     Mesh unit = read(repro + "crash_sigfpe_polylines_tiny_scale.off", 1e140);
-    const Outcome a = polylines_outcome(tiny, read_polylines(repro + "crash_sigfpe_polylines_tiny_scale.obj"), 1e-140);
-    const Outcome b = polylines_outcome(unit, read_polylines(repro + "crash_sigfpe_polylines_tiny_scale.obj", 1e140));
+    const Outcome a = polylines_outcome(tiny, read_polylines(repro + "crash_sigfpe_polylines_tiny_scale.polylines.obj"), 1e-140);
+    const Outcome b = polylines_outcome(unit, read_polylines(repro + "crash_sigfpe_polylines_tiny_scale.polylines.obj", 1e140));
     expect_same_up_to_scale(b, a);
   }
   // a closed stroke and an open one on grid10 at 1e-140, 1e20 and 1e160
   const Polylines strokes{{Point(0.23, 0.31, 0), Point(0.71, 0.27, 0), Point(0.64, 0.77, 0), Point(0.23, 0.31, 0)},
                           {Point(0.12, 0.88, 0), Point(0.47, 0.93, 0)}};
-  Mesh unit = read(repro + "grid10.obj");
+  Mesh unit = read(repro + "grid10.offmesh.obj");
   const Outcome a = polylines_outcome(unit, strokes);
   EXPECT_GT(a.area_of(1), 0.05);
   for(double scale : {1e-140, 1e20, 1e160})
@@ -271,7 +271,7 @@ TEST(CurvesOffMesh, PolylinesOnScaledCopiesGiveTheUnitAnswer)
     Polylines scaled = strokes;
     for(auto& l : scaled)
       for(Point& p : l) p = Point(scale * p.x(), scale * p.y(), scale * p.z());
-    Mesh m = read(repro + "grid10.obj", scale);
+    Mesh m = read(repro + "grid10.offmesh.obj", scale);
     expect_same_up_to_scale(a, polylines_outcome(m, scaled, scale));
   }
 }
@@ -280,14 +280,14 @@ TEST(CurvesOffMesh, StampsOnScaledCopiesGiveTheUnitAnswer)
 {
   const Drawing shapes = IO::read_svg_polylines(repro + "shapes.svg").polylines;
   const K::Vector_3 down(0, 0, -1);
-  const Mesh unit = read(repro + "grid10.obj");
+  const Mesh unit = read(repro + "grid10.offmesh.obj");
   const auto a = SWN::stamp_polylines(unit, shapes, SWN::fit_stamp_frame(unit, shapes, down));
   ASSERT_FALSE(a.empty());
   Mesh cut_unit = unit;
   const Outcome oa = polylines_outcome(cut_unit, a);
   for(double scale : {1e-140, 1e20, 1e160})
   {
-    const Mesh m = read(repro + "grid10.obj", scale);
+    const Mesh m = read(repro + "grid10.offmesh.obj", scale);
     const auto b = SWN::stamp_polylines(m, shapes, SWN::fit_stamp_frame(m, shapes, down));
     ASSERT_EQ(a.size(), b.size()) << "scale " << scale;
     for(std::size_t i = 0; i < a.size(); ++i)
@@ -305,7 +305,7 @@ TEST(CurvesOffMesh, StampsOnScaledCopiesGiveTheUnitAnswer)
 TEST(CurvesOffMesh, ClosedDrawingsAlongEdgesAndThroughVerticesStayClosed)
 {
   // a square along grid edges, through its corners only, and with points on the midpoints of its sides
-  for(const std::string file : {"silent_polylines_along_edges_corners_only_ok.obj", "silent_polylines_along_edges_with_midpoints.obj"})
+  for(const std::string file : {"silent_polylines_along_edges_corners_only_ok.polylines.obj", "silent_polylines_along_edges_with_midpoints.polylines.obj"})
   {
     Mesh m = read(tdata + "grid4.off");
     const Outcome o = polylines_outcome(m, read_polylines(repro + file));
@@ -315,7 +315,7 @@ TEST(CurvesOffMesh, ClosedDrawingsAlongEdgesAndThroughVerticesStayClosed)
   }
   // a stamped square whose sides land on grid lines of grid10 (0.1 to 0.9)
   {
-    Mesh m = read(repro + "grid10.obj");
+    Mesh m = read(repro + "grid10.offmesh.obj");
     const Drawing square = IO::read_svg_polylines(repro + "silent_stamp_square_on_grid_lines.svg").polylines;
     const auto stamped = SWN::stamp_polylines(m, square, SWN::fit_stamp_frame(m, square, K::Vector_3(0, 0, -1)));
     const Outcome o = polylines_outcome(m, stamped);
@@ -327,7 +327,7 @@ TEST(CurvesOffMesh, ClosedDrawingsAlongEdgesAndThroughVerticesStayClosed)
   // the mesh: closed, with the same area whatever the alignment
   for(double angle : {0., 1e-13, 0.3})
   {
-    Mesh m = read(repro + "grid10.obj");
+    Mesh m = read(repro + "grid10.offmesh.obj");
     const double c = std::cos(angle), sn = std::sin(angle);
     auto turn = [&](double x, double y) { return Point(c * x - sn * y, sn * x + c * y, 0); };
     for(VI v : m.vertices()) m.point(v) = turn(m.point(v).x(), m.point(v).y());
@@ -363,7 +363,7 @@ Polylines pentagram(double r)
 TEST(CurvesOffMesh, SelfCrossingStrokesAreCutOnceWithAVertexAtEveryCrossing)
 {
   const double pi = std::acos(-1.), r = 0.41;
-  Mesh input = read(repro + "grid10.obj");
+  Mesh input = read(repro + "grid10.offmesh.obj");
   {
     Mesh m = input;
     auto chain = m.add_property_map<Mesh::Edge_index, int>("e:chain", 0).first;
@@ -409,7 +409,7 @@ TEST(CurvesOffMesh, SelfCrossingStrokesAreCutOnceWithAVertexAtEveryCrossing)
     Mesh m = input;
     auto chain = m.add_property_map<Mesh::Edge_index, int>("e:chain", 0).first;
     auto origin = m.add_property_map<FI, FI>("f:origin", FI()).first;
-    const auto res = SWN::polylines_to_chain(m, read_polylines(repro + "hang_polylines_random_crossings_10KB.obj"), chain,
+    const auto res = SWN::polylines_to_chain(m, read_polylines(repro + "hang_polylines_random_crossings_10KB.polylines.obj"), chain,
                                              SWN::parameters::face_origin_map(origin));
     ASSERT_TRUE(bool(res)) << res.error;
     EXPECT_GT(res.cut.crossing_vertices, 100u);
