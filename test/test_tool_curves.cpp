@@ -164,8 +164,8 @@ TEST(ToolCurves, PolylinesReportTheLibrarysCountsOnConsoleAndInSummary)
   const std::string file = (dir / "stroke.obj").string();
   const Tool_run r = run(grid + " --polylines '" + file + "' --output-dir '" + (dir / "out").string() + "'");
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_NE(r.out.find("polylines " + file + ": 1 polylines, 3 points (1 off the surface), 0 failed walks, 0 dropped "
-                       "crossings: 1 curves; cut: 4 vertices added"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("polylines " + file + ": 1 polylines, 3 points (1 off the surface), 0 failed walks, 0 crossings: "
+                       "1 curves; cut: 4 vertices added"), std::string::npos) << r.out;
   EXPECT_NE(r.err.find("warning: " + file + ":6: polyline 0: 1 of its 3 points are farther than the mean edge length"),
             std::string::npos) << "a stroke that loses points warns, with its `l` line: " << r.err;
   const std::string summary = slurp((dir / "out" / "summary.json").string());
@@ -174,7 +174,7 @@ TEST(ToolCurves, PolylinesReportTheLibrarysCountsOnConsoleAndInSummary)
   EXPECT_EQ(json_number(summary, "points", at), 3);
   EXPECT_EQ(json_number(summary, "points_off_surface", at), 1);
   EXPECT_EQ(json_number(summary, "failed_walks", at), 0);
-  EXPECT_EQ(json_number(summary, "dropped_crossings", at), 0);
+  EXPECT_EQ(json_number(summary, "crossing_vertices", at), 0);
   EXPECT_EQ(json_number(summary, "curves", at), 1);
   EXPECT_EQ(json_number(summary, "cut_vertices", at), 4);
   // the solved mesh is the grid with the vertices of the cut and of the refinement, counted in solved_mesh
@@ -187,6 +187,25 @@ TEST(ToolCurves, PolylinesReportTheLibrarysCountsOnConsoleAndInSummary)
   // --verbose: the polyline's details on stderr
   const Tool_run v = run(grid + " --polylines '" + file + "' --verbose");
   EXPECT_NE(v.err.find("[swn] " + file + ":6: polyline 0: 1 of its 3 points"), std::string::npos) << v.err;
+  fs::remove_all(dir);
+}
+
+TEST(ToolCurves, StrokesCrossingInsideAFaceAreCutInOnceAndReported)
+{
+  const fs::path dir = fresh_dir("report_crossing");
+  fs::create_directories(dir);
+  // y = 0.45 from x = 0.2 to 2.8 and x = 0.25 from y = 0.1 to 2.9 cross at (0.25, 0.45), strictly inside the
+  // face of the square [0,1]^2 above its diagonal: one vertex where they cross, none refused
+  std::ofstream(dir / "cross.obj") << "v 0.2 0.45 0\nv 2.8 0.45 0\nv 0.25 0.1 0\nv 0.25 2.9 0\nl 1 2\nl 3 4\n";
+  const std::string file = (dir / "cross.obj").string();
+  const Tool_run r = run(grid + " --polylines '" + file + "' --output-dir '" + (dir / "out").string() + "'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("0 failed walks, 1 crossings: 2 curves"), std::string::npos) << r.out;
+  const std::string summary = slurp((dir / "out" / "summary.json").string());
+  const std::size_t at = summary.find("\"curves_off_mesh\"");
+  ASSERT_NE(at, std::string::npos) << summary;
+  EXPECT_EQ(json_number(summary, "crossing_vertices", at), 1);
+  EXPECT_EQ(json_number(summary, "interior_endpoints"), 4);
   fs::remove_all(dir);
 }
 

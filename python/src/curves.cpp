@@ -97,7 +97,7 @@ py::dict put_on_mesh(Mesh& mesh, const Polylines_3& polylines, std::optional<dou
     {"cut_faces", r.cut.cut_faces}, {"refinement_vertices", r.cut.refinement_vertices},
     {"refinement_faces", r.cut.refinement_faces}, {"refined_pieces", r.cut.refined_pieces}, {"points", r.points},
     {"points_off_surface", r.points_off_surface}, {"failed_walks", r.failed_walks},
-    {"dropped_crossings", r.dropped_crossings}, {"curves", r.curves}};
+    {"crossing_vertices", r.cut.crossing_vertices}, {"curves", r.curves}};
   for(const auto& [key, value] : counts) info[key] = value;
   info["pieces"] = r.pieces;
   py::list warnings = info.contains("warnings") ? py::list(info["warnings"]) : py::list();

@@ -123,8 +123,8 @@ std::vector<int> vertex_curve_chain(const CGAL::Surface_mesh<Point>& mesh, const
          `Cut_result::point_vertex`
   \param options refinement options
   \throws Input_error (with the file and line of the offending record) on dual pairs ("dual chains (c lines)
-  are not supported yet"), an index out of range, t outside [0,1], a segment whose points share no face, or two
-  segments crossing inside a face.
+  are not supported yet"), an index out of range, t outside [0,1] or a segment whose points share no face (segments
+  crossing inside a face get a vertex where they cross).
 */
 template <class Point>
 Cut_result<Point> conforming_cut(const CGAL::Surface_mesh<Point>& mesh, const std::vector<Curve_set>& curves,
@@ -196,14 +196,9 @@ Cut_result<Point> conforming_cut(const CGAL::Surface_mesh<Point>& mesh, const st
   if(!cut)
   {
     const auto& [file, line] = where[cut.curve];
-    if(cut.error != cut.CROSSING_SEGMENTS)
-      throw Input_error(*file, line, cut.error == cut.INVALID_LOCATION
-                                       ? "the segment does not lie in a single face (its two points share no face)"
-                                       : cut.message);
-    const auto& [other_file, other_line] = where[cut.other_curve];
-    const std::string other = (*other_file == *file ? "" : *other_file + ":") + "line " + std::to_string(other_line);
-    throw Input_error(*file, line, "this segment crosses the segment at " + other +
-                                       " inside a face (crossing segments are not supported)");
+    throw Input_error(*file, line, cut.error == cut.INVALID_LOCATION
+                                     ? "the segment does not lie in a single face (its two points share no face)"
+                                     : cut.message);
   }
   result.chain.assign(result.mesh.number_of_edges(), 0);
   for(auto e : result.mesh.edges()) result.chain[std::size_t(e)] = chain[e];

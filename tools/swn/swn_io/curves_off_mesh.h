@@ -64,9 +64,9 @@ struct Off_mesh_report
   /// missing the mesh, meeting the back of a face or jumping to another layer breaks a polyline)
   std::size_t polylines = 0, stamped_polylines = 0;
   /// `Polylines_to_chain_result`: points (a stamp: of the stamped polylines), points farther than the mean
-  /// edge length from the surface, segments the walk could not follow, pieces dropped where they crossed
-  /// another inside a face, curves put on the mesh
-  std::size_t points = 0, points_off_surface = 0, failed_walks = 0, dropped_crossings = 0, curves = 0;
+  /// edge length from the surface, segments the walk could not follow, vertices the cut put where
+  /// curves cross inside a face (`Conforming_cut_result::crossing_vertices`), curves put on the mesh
+  std::size_t points = 0, points_off_surface = 0, failed_walks = 0, crossing_vertices = 0, curves = 0;
   /// the cut: vertices and faces added, short pieces refined and the vertices and faces that added
   std::size_t cut_vertices = 0, cut_faces = 0, refined_pieces = 0, refinement_vertices = 0, refinement_faces = 0;
   /// one line per polyline broken into pieces or losing points (`FILE:LINE: ...`), for `--verbose`
@@ -79,7 +79,7 @@ inline std::string summary_line(const Off_mesh_report& r)
   std::string s = std::string(r.stamp ? "stamp " : "polylines ") + r.file + ": " + std::to_string(r.polylines) + " polylines";
   if(r.stamp) s += " stamped as " + std::to_string(r.stamped_polylines);
   return s + ", " + std::to_string(r.points) + " points (" + std::to_string(r.points_off_surface) + " off the surface), " +
-         std::to_string(r.failed_walks) + " failed walks, " + std::to_string(r.dropped_crossings) + " dropped crossings: " +
+         std::to_string(r.failed_walks) + " failed walks, " + std::to_string(r.crossing_vertices) + " crossings: " +
          std::to_string(r.curves) + " curves; cut: " + std::to_string(r.cut_vertices) + " vertices added, " +
          std::to_string(r.refined_pieces) + " pieces refined (" + std::to_string(r.refinement_vertices) + " vertices)";
 }
@@ -139,7 +139,7 @@ void polyline_details(const Result& r, const PolylineRange& given, const std::ve
   \brief puts the curves onto `cut.mesh` (cutting it further), adds them to `cut.chain` and adds the
   vertices and faces of the cut and of the refinement to the counts of `cut`; calls `warn` with every
   warning as it comes (the drawing's, the library's about polylines that gave nothing, polylines that lose
-  points, segments the walk could not follow and crossings dropped, each with its file and line).
+  points and segments the walk could not follow, each with its file and line).
   \param mesh_file the mesh's file, named when the stamp fails because of the mesh
   \returns one report per file (polylines first, then the stamp)
   \throws Input_error when there is no curve at all on the surface afterwards (every point too far, every
@@ -174,7 +174,7 @@ std::vector<Off_mesh_report> add_off_mesh_curves(Cut_result<Point>& cut, const O
     report.points = r.points;
     report.points_off_surface = r.points_off_surface;
     report.failed_walks = r.failed_walks;
-    report.dropped_crossings = r.dropped_crossings;
+    report.crossing_vertices = r.cut.crossing_vertices;
     report.curves = r.curves;
     report.cut_vertices = r.cut.cut_vertices;
     report.cut_faces = r.cut.cut_faces;
@@ -185,9 +185,6 @@ std::vector<Off_mesh_report> add_off_mesh_curves(Cut_result<Point>& cut, const O
     if(report.failed_walks > 0)
       warn(report.file + ": " + std::to_string(report.failed_walks) + " segments could not be followed along the surface "
            "(the border, or a fold the walk cannot cross): gaps");
-    if(report.dropped_crossings > 0)
-      warn(report.file + ": " + std::to_string(report.dropped_crossings) + " pieces crossing another piece inside a face were "
-           "dropped: gaps of one face");
     cut.cut = cut.cut || report.cut_vertices > 0;
     cut.cut_new_vertices += report.cut_vertices;
     cut.cut_new_faces += report.cut_faces;
