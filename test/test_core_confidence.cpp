@@ -176,6 +176,83 @@ TEST(Confidence, RegionBetweenTwoNestedLoopsCannotFlipAlone)
   }
 }
 
+TEST(Confidence, PolygonSoupGivesEveryPolygonTheConfidenceOfItsRegion)
+{
+  // A torus of quads (triangulated internally along a diagonal), as a soup and as a quad Surface_mesh,
+  // with a meridian and a rectangle loop around 4 x 4 quads: the region inside the loop costs epsilon times
+  // its length, in mean interior edge lengths (the quads' edges and the diagonals of the triangulation),
+  // on both paths; every polygon gets its region's values, the same on both.
+  const int nu = 24, nv = 12;
+  Mesh triangles;   // its points: those of torus_mesh(nu, nv), vertex (i, j) at i nv + j
+  std::vector<K::Point_3> points;
+  for(Vertex v : torus_mesh(triangles, nu, nv)) points.push_back(triangles.point(v));
+  auto V = [&](int i, int j) { return std::size_t(((i % nu + nu) % nu) * nv + (j % nv + nv) % nv); };
+  std::vector<std::vector<std::size_t>> quads;
+  double length_sum = 0;   // the interior edges of the triangulated quads: two edges and one diagonal per quad
+  auto dist = [&](std::size_t p, std::size_t q) { return std::sqrt(CGAL::squared_distance(points[p], points[q])); };
+  for(int i = 0; i < nu; ++i)
+    for(int j = 0; j < nv; ++j)
+    {
+      quads.push_back({V(i, j), V(i + 1, j), V(i + 1, j + 1), V(i, j + 1)});
+      // isosceles trapezoids: both diagonals have the same length
+      length_sum += dist(V(i, j), V(i + 1, j)) + dist(V(i, j), V(i, j + 1)) + dist(V(i, j), V(i + 1, j + 1));
+    }
+  const double mean = length_sum / double(3 * nu * nv);
+  Mesh m;
+  for(const auto& p : points) m.add_vertex(p);
+  const std::vector<Vertex> vs(m.vertices().begin(), m.vertices().end());
+  for(const auto& q : quads) ASSERT_NE(m.add_face(vs[q[0]], vs[q[1]], vs[q[2]], vs[q[3]]), Mesh::null_face());
+  const std::vector<Vertex> meridian = meridian_piece(vs, nv, 3, 0, nv);
+  const std::vector<Vertex> rect = rect_loop(torus_vertex(vs, nv), 10, 2, 14, 6);
+  double rect_length = 0;
+  std::vector<std::pair<std::size_t, std::size_t>> curve;
+  for(const auto* p : {&meridian, &rect})
+    for(std::size_t k = 0; k + 1 < p->size(); ++k) curve.emplace_back(std::size_t((*p)[k]), std::size_t((*p)[k + 1]));
+  for(std::size_t k = 0; k + 1 < rect.size(); ++k) rect_length += dist(std::size_t(rect[k]), std::size_t(rect[k + 1]));
+  const double expected = 0.01 * rect_length / mean;
+
+  const std::size_t P = quads.size();
+  std::vector<int> W(P, 7), second(P, 7);
+  std::vector<double> cost(P, -1.);
+  std::vector<std::size_t> region(P, 99);
+  SWN::Label_confidence conf;
+  namespace NP = SWN::parameters;
+  ASSERT_TRUE(CGAL::polygon_soup_winding_numbers(points, quads, curve, CGAL::make_property_map(W),
+    NP::label_confidence(std::ref(conf), NP::confidence_map(CGAL::make_property_map(cost),
+    NP::region_map(CGAL::make_property_map(region), NP::second_best_label_map(CGAL::make_property_map(second)))))));
+  ASSERT_EQ(conf.regions.size(), 2u);
+  std::size_t quads_in[2] = {0, 0};
+  for(std::size_t p = 0; p < P; ++p)
+  {
+    ASSERT_LT(region[p], 2u);
+    ++quads_in[region[p]];
+    const SWN::Label_region& r = conf.regions[region[p]];
+    EXPECT_EQ(W[p], r.label);
+    EXPECT_EQ(cost[p], r.flip_cost);
+    EXPECT_EQ(second[p], W[p] + (region[p] == conf.second_best_region ? r.flip_delta : 0));
+  }
+  const std::size_t inside = quads_in[0] < quads_in[1] ? 0 : 1;
+  EXPECT_EQ(quads_in[inside], 16u);
+  EXPECT_EQ(conf.regions[inside].faces, 32u);   // the triangles of its quads
+  EXPECT_EQ(conf.regions[1 - inside].faces, std::size_t(2 * P - 32));
+  EXPECT_NEAR(conf.regions[inside].flip_cost, expected, 1e-9 * expected);
+  EXPECT_NEAR(conf.regions[1 - inside].flip_cost, expected, 1e-9 * expected);
+  EXPECT_EQ(conf.second_best_region, inside);
+  for(std::size_t p = 0; p < P; ++p) EXPECT_EQ(second[p], conf.regions[1 - inside].label);   // flipped: constant
+
+  // the mesh path on the same quads: the same values per polygon
+  const Confidence_case c = solve_case(m, {meridian, rect});
+  ASSERT_EQ(c.conf.regions.size(), 2u);
+  for(auto f : faces(m))
+  {
+    const std::size_t p = std::size_t(f);
+    EXPECT_EQ(c.W.at(f), W[p]);
+    EXPECT_NEAR(c.cost.at(f), cost[p], 1e-12 * expected);
+    EXPECT_EQ(c.second.at(f), second[p]);
+    EXPECT_EQ(c.conf.regions[c.region.at(f)].faces, conf.regions[region[p]].faces);
+  }
+}
+
 TEST(Confidence, HintsRelabelARegionAndRedrawTheMissingRunNextToTheError)
 {
   Mesh m;

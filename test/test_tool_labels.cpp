@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
 
 namespace {
 
@@ -145,7 +146,14 @@ TEST(ToolLabels, PerInputFaceLabelsAfterACutAreTheAnalyticOnesAndTheAnchorFaceIs
   fs::remove_all(dir);
 }
 
-TEST(ToolLabels, AnchorFaceOnTheSoupRoute)
+// the number after `"key": ` in a JSON text (NaN if absent)
+double json_number(const std::string& text, const std::string& key)
+{
+  const std::size_t at = text.find("\"" + key + "\": ");
+  return at == std::string::npos ? std::nan("") : std::strtod(text.c_str() + at + key.size() + 4, nullptr);
+}
+
+TEST(ToolLabels, AnchorFaceAndConfidenceOnTheSoupRoute)
 {
   // the same grid with its two triangles per cell merged into quads: solved as a polygon soup, no cut;
   // the square along grid lines [0.2, 0.8]^2 given as a vertex polyline
@@ -177,6 +185,23 @@ TEST(ToolLabels, AnchorFaceOnTheSoupRoute)
     const int i = int(q) % n, j = int(q) / n;
     EXPECT_EQ(labels[q], i >= 1 && i <= 3 && j >= 1 && j <= 3 ? 0 : -1) << "quad " << q;
   }
+  fs::remove_all(out);
+
+  // confidence: two regions; the inside one (9 quads, 18 triangles of the internal triangulation) flips
+  // at epsilon times the square's length (12 edges of 1/5), in mean interior edge lengths (the 40 interior
+  // grid edges of 1/5 and the 25 diagonals of sqrt(2)/5); mesh.ply gets confidence and region per quad
+  const Tool_run c = run("'" + (dir / "quads.obj").string() + "' --quiet --confidence --output-dir '" + out.string() + "'");
+  ASSERT_EQ(c.status, 0) << c.err;
+  const std::string summary = slurp((out / "summary.json").string());
+  const double mean = (40 * 0.2 + 25 * 0.2 * std::sqrt(2.)) / 65;
+  EXPECT_EQ(json_number(summary, "regions"), 2.) << summary;
+  EXPECT_NEAR(json_number(summary, "second_best_cost"), 0.01 * 12 * 0.2 / mean, 1e-9) << summary;
+  EXPECT_NEAR(json_number(summary, "second_best_area"), 0.36, 1e-12) << summary;
+  EXPECT_NE(summary.find("\"faces\": 18,"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("\"per_region\": ["), std::string::npos) << summary;
+  const std::string ply = slurp((out / "mesh.ply").string());
+  EXPECT_NE(ply.find("element face 25\n"), std::string::npos);
+  EXPECT_NE(ply.find("property float winding_number\nproperty float confidence\nproperty int region\n"), std::string::npos);
   fs::remove_all(out);
   fs::remove_all(dir);
 }

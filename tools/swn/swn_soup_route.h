@@ -31,12 +31,18 @@ int run_on_soup(const Options& opt, const SIO::Triangle_soup& soup, const SIO::M
   SIO::Soup_corner_values w;
   SIO::Soup_edge_chain G, B;
   std::map<std::pair<std::size_t, std::size_t>, double> g;
+  std::vector<double> confidence(nf, 0.);
+  std::vector<std::size_t> region(nf, 0);
+  SWN::Label_confidence regions;
   SWN::Solve_report report;
   auto solve_on = [&](const auto& polygons) {
     return with_solvers(opt, [&](auto& lp, auto sparse_solver) {
       return CGAL::polygon_soup_winding_numbers(
         points, polygons, curve.edges, CGAL::make_property_map(labels),
         SWN::parameters::dual_chain(curve.dual_pairs,
+        SWN::parameters::label_confidence(std::ref(regions),
+        SWN::parameters::confidence_map(CGAL::make_property_map(confidence),
+        SWN::parameters::region_map(CGAL::make_property_map(region),
         SWN::parameters::winding_number_map(boost::make_assoc_property_map(w),
         SWN::parameters::nonbounding_chain_map(boost::make_assoc_property_map(G),
         SWN::parameters::nonbounding_chain_real_map(boost::make_assoc_property_map(g),
@@ -46,7 +52,7 @@ int run_on_soup(const Options& opt, const SIO::Triangle_soup& soup, const SIO::M
         SWN::parameters::concurrency(!opt.sequential,
         SWN::parameters::lp_solver(std::ref(lp),
         SWN::parameters::label_anchor_face(opt.anchor_face - 1,
-        SWN::parameters::report(std::ref(report)))))))))))))
+        SWN::parameters::report(std::ref(report))))))))))))))))
           .verbose(opt.verbose).sparse_linear_solver(sparse_solver));
     });
   };
@@ -94,7 +100,8 @@ int run_on_soup(const Options& opt, const SIO::Triangle_soup& soup, const SIO::M
     {
       SIO::Atomic_output_dir out(opt.output_dir);
       SIO::write_soup_labels(out.path("labels.txt"), labels);
-      SIO::write_soup_ply(out.path("mesh.ply"), soup, labels, w);
+      SIO::write_soup_ply(out.path("mesh.ply"), soup, labels, w, opt.confidence ? confidence : std::vector<double>(),
+                          opt.confidence ? region : std::vector<std::size_t>());
       SIO::write_soup_w_obj(out.path("w.obj"), soup, w);
       SIO::write_soup_chain_obj(out.path("bounding.obj"), soup, B);
       SIO::write_soup_chain_obj(out.path("nonbounding.obj"), soup, G);
@@ -131,6 +138,7 @@ int run_on_soup(const Options& opt, const SIO::Triangle_soup& soup, const SIO::M
         .end_object();
       json_method_and_labels(j, opt, report, histogram);
       j.key("labels_txt").value(std::string("per input face"));   // no cut on this route
+      json_confidence(j, opt, regions);
       j.key("timings_seconds").begin_object()
         .key("read").value(t_read).key("mesh_tables").value(report.time_mesh)
         .key("jump_laplace").value(report.time_setup + report.time_jump_laplace)

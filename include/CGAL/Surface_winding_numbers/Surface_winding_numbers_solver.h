@@ -146,6 +146,54 @@ Core_result solve_with_parameters(Winding_number_core<LA>& core, const std::vect
     return core.solve(chain, options, get_parameter_reference(np, snp::lp_solver), rep);
 }
 
+// The confidence outputs (label_confidence, confidence_map, region_map, second_best_label_map), computed only
+// when one of them is asked for; the maps are written for every key of `keys`, which stands for the polygon
+// `polygon_of(key)` of the tables. The triangles of a polygon share its region (no curve, G or label jump on
+// its diagonals): a polygon's values are those of its first triangle.
+template <class NamedParameters, class KeyRange, class PolygonOf>
+void write_confidence(const Mesh_tables& m, const Core_result& r, const std::vector<double>& chain,
+                      const NamedParameters& np, const KeyRange& keys, PolygonOf polygon_of)
+{
+  using CGAL::parameters::get_parameter;
+  using CGAL::parameters::is_default_parameter;
+  namespace snp = Surface_winding_numbers::internal_np;
+  constexpr bool conf = !is_default_parameter<NamedParameters, snp::label_confidence_t>::value;
+  constexpr bool cmap = !is_default_parameter<NamedParameters, snp::confidence_map_t>::value;
+  constexpr bool rmap = !is_default_parameter<NamedParameters, snp::region_map_t>::value;
+  constexpr bool smap = !is_default_parameter<NamedParameters, snp::second_best_label_map_t>::value;
+  if constexpr(conf || cmap || rmap || smap)
+  {
+    const double epsilon = CGAL::parameters::choose_parameter(get_parameter(np, snp::epsilon), 0.01);
+    const Confidence c = label_confidence(m, chain, r.G, r.labels, epsilon);
+    auto triangle = [&](const auto& key) { return m.polygon_triangle(polygon_of(key)); };
+    if constexpr(conf)
+      CGAL::parameters::get_parameter_reference(np, snp::label_confidence) = public_confidence(m, c, r.labels);
+    if constexpr(cmap)
+    {
+      auto map = get_parameter(np, snp::confidence_map);
+      typedef typename boost::property_traits<decltype(map)>::value_type V;
+      for(const auto& k : keys) put(map, k, static_cast<V>(c.flips[c.regions.of_face[triangle(k)]].cost));
+    }
+    if constexpr(rmap)
+    {
+      auto map = get_parameter(np, snp::region_map);
+      typedef typename boost::property_traits<decltype(map)>::value_type V;
+      for(const auto& k : keys) put(map, k, static_cast<V>(c.regions.of_face[triangle(k)]));
+    }
+    if constexpr(smap)
+    {
+      auto map = get_parameter(np, snp::second_best_label_map);
+      typedef typename boost::property_traits<decltype(map)>::value_type V;
+      for(const auto& k : keys)
+      {
+        const std::size_t t = triangle(k), region = c.regions.of_face[t];
+        const int flip = region == c.second_best ? c.flips[region].delta : 0;
+        put(map, k, static_cast<V>(r.labels[t] + flip));
+      }
+    }
+  }
+}
+
 // writes the report to the named parameter `report`, if given
 template <class NamedParameters>
 void write_report(const NamedParameters& np, const Solve_report& rep)
@@ -430,50 +478,11 @@ private:
     check_map<snp::second_best_label_map_t>(np, snp::second_best_label_map, faces(tm_), "second_best_label_map", "faces");
   }
 
-  // the confidence outputs (label_confidence, confidence_map, region_map, second_best_label_map), computed
-  // only when one of them is asked for
+  // the confidence outputs, per face of tm_ (its polygon of the tables)
   template <class NamedParameters>
   void write_confidence(const internal::Core_result& r, const std::vector<double>& chain, const NamedParameters& np) const
   {
-    using CGAL::parameters::get_parameter;
-    using CGAL::parameters::is_default_parameter;
-    namespace snp = Surface_winding_numbers::internal_np;
-    constexpr bool conf = !is_default_parameter<NamedParameters, snp::label_confidence_t>::value;
-    constexpr bool cmap = !is_default_parameter<NamedParameters, snp::confidence_map_t>::value;
-    constexpr bool rmap = !is_default_parameter<NamedParameters, snp::region_map_t>::value;
-    constexpr bool smap = !is_default_parameter<NamedParameters, snp::second_best_label_map_t>::value;
-    if constexpr(conf || cmap || rmap || smap)
-    {
-      const internal::Mesh_tables& m = core_->tables();
-      const double epsilon = CGAL::parameters::choose_parameter(get_parameter(np, snp::epsilon), 0.01);
-      const internal::Confidence c = internal::label_confidence(m, chain, r.G, r.labels, epsilon);
-      auto region = [&](face_descriptor f) { return c.regions.of_face[m.polygon_triangle(get(fim_, f))]; };
-      if constexpr(conf)
-        CGAL::parameters::get_parameter_reference(np, snp::label_confidence) = internal::public_confidence(m, c, r.labels);
-      if constexpr(cmap)
-      {
-        auto map = get_parameter(np, snp::confidence_map);
-        typedef typename boost::property_traits<decltype(map)>::value_type V;
-        for(face_descriptor f : faces(tm_)) put(map, f, static_cast<V>(c.flips[region(f)].cost));
-      }
-      if constexpr(rmap)
-      {
-        auto map = get_parameter(np, snp::region_map);
-        typedef typename boost::property_traits<decltype(map)>::value_type V;
-        for(face_descriptor f : faces(tm_)) put(map, f, static_cast<V>(region(f)));
-      }
-      if constexpr(smap)
-      {
-        auto map = get_parameter(np, snp::second_best_label_map);
-        typedef typename boost::property_traits<decltype(map)>::value_type V;
-        for(face_descriptor f : faces(tm_))
-        {
-          const std::size_t k = region(f);
-          const int flip = k == c.second_best ? c.flips[k].delta : 0;
-          put(map, f, static_cast<V>(r.labels[m.polygon_triangle(get(fim_, f))] + flip));
-        }
-      }
-    }
+    internal::write_confidence(core_->tables(), r, chain, np, faces(tm_), [&](face_descriptor f) { return std::size_t(get(fim_, f)); });
   }
 
   template <class Tag, class NamedParameters, class Values>

@@ -13,6 +13,7 @@
 #include <CGAL/number_utils.h>
 
 #include <boost/property_map/property_map.hpp>
+#include <boost/range/irange.hpp>
 
 #include <cstddef>
 #include <map>
@@ -65,7 +66,7 @@ lives on the input's polygons, corners and edges.
 \param labels receives W for every polygon
 \param np an optional sequence of named parameters: those of `CGAL::surface_winding_numbers()` (`epsilon`,
        `lp_solver`, `use_reduced_residual`, `filter_nonbounding_loops`, `concurrency`, `report`, `verbose`,
-       `label_anchor_face` (here a polygon index; `std::size_t(-1)`: none),
+       `label_anchor_face` (here a polygon index; `std::size_t(-1)`: none), `label_confidence`,
        `sparse_linear_solver`), and
        `dual_chain`: a range of pairs `(a, b)` of polygon indices (as `std::pair` or `std::array`), each
        adding a jump of +1 from polygon `a` into polygon `b` across the edge they share (paper Sec. 3.7, the
@@ -74,7 +75,11 @@ lives on the input's polygons, corners and edges.
        `bounding_chain_map` have the key `std::pair<std::size_t, std::size_t>` (the two vertices `(i, j)` of
        an edge, `i < j`; the value is signed from `i` to `j`) and are written for every edge;
        `winding_number_map` has the key `std::pair<std::size_t, std::size_t>` (a polygon and the position
-       of a corner in it) and receives w at that corner.
+       of a corner in it) and receives w at that corner; `confidence_map`, `region_map` and
+       `second_best_label_map` have the key `std::size_t` (a polygon) and receive the values of the
+       polygon's region (\ref SWNConfidence; a polygon is never split between regions: its triangles share
+       its label, and no curve or nonbounding loop runs along its diagonals). The regions' `faces` count
+       the triangles of the internal triangulation.
 
 \returns `true` on success. On failure (bad indices, polygons with fewer than three vertices or a repeated
 vertex, non-finite coordinates, a degenerate triangle, a curve edge that is not an edge of the soup, a pair
@@ -149,6 +154,8 @@ bool polygon_soup_winding_numbers(const PointRange& points, const PolygonRange& 
     write_edges(snp::nonbounding_chain_map, r.G);
     write_edges(snp::nonbounding_chain_real_map, r.g);
     write_edges(snp::bounding_chain_map, r.bounding);
+    SI::write_confidence(m, r, chain, np, boost::irange(std::size_t(0), m.number_of_polygons()),
+                         [](std::size_t p) { return p; });
     if constexpr(!parameters::is_default_parameter<NamedParameters, snp::winding_number_map_t>::value)
     {
       auto map = parameters::get_parameter(np, snp::winding_number_map);

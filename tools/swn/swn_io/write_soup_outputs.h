@@ -57,19 +57,24 @@ inline void write_soup_labels(const std::string& path, const std::vector<int>& l
 /*!
   \brief writes the soup as binary little-endian PLY with its own faces (polygons kept) and, per face,
   `int label`, `float winding_number` (the mean of its defined corner values) and `uchar red, green, blue,
-  alpha` (`label_color()`), as `write_labeled_ply()` does for meshes.
+  alpha` (`label_color()`), as `write_labeled_ply()` does for meshes; with `confidence` (per face, may be
+  empty: not written) also `float confidence` and `int region` after `winding_number`.
 */
 inline void write_soup_ply(const std::string& path, const Triangle_soup& soup, const std::vector<int>& labels,
-                           const Soup_corner_values& w)
+                           const Soup_corner_values& w, const std::vector<double>& confidence = std::vector<double>(),
+                           const std::vector<std::size_t>& region = std::vector<std::size_t>())
 {
   const std::size_t nf = number_of_faces(soup);
   if(labels.size() != nf) throw std::invalid_argument("write_soup_ply: one label per face expected");
+  if(!confidence.empty() && (confidence.size() != nf || region.size() != nf))
+    throw std::invalid_argument("write_soup_ply: one confidence and one region per face expected");
   internal::write_to_path(path, [&](std::ostream& os) {
     internal::Output_buffer out(os);
     out << "ply\nformat binary_little_endian 1.0\ncomment written by CGAL Surface_winding_numbers\nelement vertex "
         << soup.points.size() << "\nproperty double x\nproperty double y\nproperty double z\nelement face " << nf
         << "\nproperty list uchar int vertex_indices\nproperty int label\nproperty float winding_number\n"
-           "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty uchar alpha\nend_header\n";
+        << (confidence.empty() ? "" : "property float confidence\nproperty int region\n")
+        << "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty uchar alpha\nend_header\n";
     for(const auto& p : soup.points)
       for(int k = 0; k < 3; ++k) internal::write_little_endian(out, p[k]);
     for(std::size_t f = 0; f < nf; ++f)
@@ -87,6 +92,11 @@ inline void write_soup_ply(const std::string& path, const Triangle_soup& soup, c
       }
       internal::write_little_endian(out, static_cast<std::int32_t>(labels[f]));
       internal::write_little_endian(out, static_cast<float>(defined > 0 ? sum / defined : std::nan("")));
+      if(!confidence.empty())
+      {
+        internal::write_little_endian(out, static_cast<float>(confidence[f]));
+        internal::write_little_endian(out, static_cast<std::int32_t>(region[f]));
+      }
       const auto rgb = label_color(labels[f]);
       for(unsigned char c : {rgb[0], rgb[1], rgb[2], static_cast<unsigned char>(255)}) internal::write_little_endian(out, c);
     }
