@@ -194,9 +194,10 @@ TEST(ToolCurves, StrokesCrossingInsideAFaceAreCutInOnceAndReported)
 {
   const fs::path dir = fresh_dir("report_crossing");
   fs::create_directories(dir);
-  // y = 0.45 from x = 0.2 to 2.8 and x = 0.25 from y = 0.1 to 2.9 cross at (0.25, 0.45), strictly inside the
-  // face of the square [0,1]^2 above its diagonal: one vertex where they cross, none refused
-  std::ofstream(dir / "cross.obj") << "v 0.2 0.45 0\nv 2.8 0.45 0\nv 0.25 0.1 0\nv 0.25 2.9 0\nl 1 2\nl 3 4\n";
+  // y = 0.45 from x = 0.2 to 2.8 and x = 1.25 from y = 0.1 to 2.9 cross at (1.25, 0.45), strictly inside the
+  // face of the square [1,2] x [0,1] above its diagonal, which both curves cross from edge to edge (curve
+  // points are where the walks cross edges): one vertex where they cross, none refused
+  std::ofstream(dir / "cross.obj") << "v 0.2 0.45 0\nv 2.8 0.45 0\nv 1.25 0.1 0\nv 1.25 2.9 0\nl 1 2\nl 3 4\n";
   const std::string file = (dir / "cross.obj").string();
   const Tool_run r = run(grid + " --polylines '" + file + "' --output-dir '" + (dir / "out").string() + "'");
   ASSERT_EQ(r.status, 0) << r.err;
