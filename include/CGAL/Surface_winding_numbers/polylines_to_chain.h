@@ -13,10 +13,12 @@
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -198,6 +200,10 @@ polylines_to_chain(TriangleMesh& tm, const PolylineRange& polylines, ChainMap ch
   const SPM spm{vpm, unit};
   const double mean_edge = internal::mean_edge_length(tm, spm);   // at unit scale
   const double tolerance = choose_parameter(get_parameter(np, internal_np::projection_tolerance), mean_edge / unit);
+  // a point farther from the mesh's box than the tolerance (or than 1e100 at unit scale) is far from the
+  // surface: it is not queried, so that squared distances cannot overflow
+  const CGAL::Bbox_3 box = PMP::bbox(tm, CGAL::parameters::vertex_point_map(spm));
+  const double margin = (std::min)(tolerance * unit, 1e100);
 
   Tree tree;
   PMP::build_AABB_tree(tm, tree, CGAL::parameters::vertex_point_map(spm));
@@ -224,6 +230,8 @@ polylines_to_chain(TriangleMesh& tm, const PolylineRange& polylines, ChainMap ch
     {
       const Vector_3 p = pts[i] - CGAL::ORIGIN;
       near[i] = std::isfinite(CGAL::to_double(p.x())) && std::isfinite(CGAL::to_double(p.y())) && std::isfinite(CGAL::to_double(p.z()));
+      for(int k = 0; k < 3 && near[i]; ++k)
+        near[i] = CGAL::to_double(p[k]) >= box.min(k) - margin && CGAL::to_double(p[k]) <= box.max(k) + margin;
       if(!near[i]) continue;
       loc[i] = PMP::locate_with_AABB_tree(pts[i], tree, tm, CGAL::parameters::vertex_point_map(spm));
       const Point q = PMP::construct_point(loc[i], tm, CGAL::parameters::vertex_point_map(spm));
