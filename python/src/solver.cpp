@@ -145,34 +145,6 @@ void add_curves(const Mesh& mesh, const Curve_arrays& curves, std::vector<int>& 
     if(m != 0 && !halfedges.empty()) SWN::add_halfedges_to_chain(mesh, halfedges, chain_map, m);
 }
 
-// the confidence outputs as a dict: per face (cost of its region's flip, region, second-best label) and per region
-py::dict confidence_dict(const SWN::Label_confidence& c, const std::vector<double>& face_cost,
-                         const std::vector<std::size_t>& region, const std::vector<int>& second_best)
-{
-  py::list regions;
-  for(const SWN::Label_region& r : c.regions)
-  {
-    py::dict d;
-    d["label"] = r.label;
-    d["faces"] = r.faces;
-    d["area"] = r.area;
-    d["component"] = r.component;
-    d["flip_cost"] = r.flip_cost;
-    d["flip_delta"] = r.flip_delta;
-    d["boundary_length"] = r.boundary_length;
-    d["largest_in_component"] = r.largest_in_component;
-    regions.append(d);
-  }
-  py::dict d;
-  d["face_cost"] = array_of(face_cost);
-  d["region"] = array_of(std::vector<std::int64_t>(region.begin(), region.end()));
-  d["regions"] = regions;
-  d["second_best_W"] = array_of(second_best);
-  d["second_best_region"] = c.second_best_region == std::size_t(-1) ? py::object(py::none()) : py::object(py::int_(c.second_best_region));
-  d["second_best_cost"] = c.second_best_cost;
-  return d;
-}
-
 // one solve of the curves on `mesh` by `solver`, its outputs as numpy arrays (W per face, w per corner,
 // the chains per edge) and the report
 py::dict solve(Mesh_solver& solver, const Mesh& mesh, const Curve_arrays& curves, const Solve_options& options,
@@ -258,6 +230,33 @@ private:
 };
 
 } // namespace
+
+py::dict confidence_dict(const SWN::Label_confidence& c, const std::vector<double>& face_cost,
+                         const std::vector<std::size_t>& region, const std::vector<int>& second_best)
+{
+  py::list regions;
+  for(const SWN::Label_region& r : c.regions)
+  {
+    py::dict d;
+    d["label"] = r.label;
+    d["faces"] = r.faces;
+    d["area"] = r.area;
+    d["component"] = r.component;
+    d["flip_cost"] = r.flip_cost;
+    d["flip_delta"] = r.flip_delta;
+    d["boundary_length"] = r.boundary_length;
+    d["largest_in_component"] = r.largest_in_component;
+    regions.append(d);
+  }
+  py::dict d;
+  d["face_cost"] = array_of(face_cost);
+  d["region"] = array_of(std::vector<std::int64_t>(region.begin(), region.end()));
+  d["regions"] = regions;
+  d["second_best_W"] = array_of(second_best);
+  d["second_best_region"] = c.second_best_region == std::size_t(-1) ? py::object(py::none()) : py::object(py::int_(c.second_best_region));
+  d["second_best_cost"] = c.second_best_cost;
+  return d;
+}
 
 py::dict solve_on_mesh(const Mesh& mesh, const Curve_arrays& curves, const Solve_options& options)
 {

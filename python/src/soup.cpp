@@ -21,6 +21,7 @@
 #include <limits>
 #include <map>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -130,8 +131,6 @@ std::vector<Vertex_pair> curve_edges(const Curve_arrays& curves, const Soup_edge
 py::dict solve_on_soup(const Triangle_soup& soup, const Curve_arrays& curves, const Index_array& dual_pairs,
                        const Solve_options& o)
 {
-  if(o.confidence)
-    throw py::value_error("confidence: the library computes it on triangle meshes only, not on polygon soups");
   const std::size_t nf = IO::number_of_faces(soup);
   const bool triangles = soup.polygons.empty();
   std::vector<std::size_t> start(nf + 1, 0);   // the first corner of every face
@@ -155,13 +154,16 @@ py::dict solve_on_soup(const Triangle_soup& soup, const Curve_arrays& curves, co
   std::vector<int> labels(nf, 0), G(edges.edges.size(), 0), bounding(edges.edges.size(), 0);
   std::vector<double> g(edges.edges.size(), 0.), w(start[nf], std::numeric_limits<double>::quiet_NaN());
   SWN::Solve_report report;
+  SWN::Label_confidence confidence;
+  std::vector<double> face_cost(o.confidence ? nf : 0, 0.);
+  std::vector<std::size_t> region(o.confidence ? nf : 0, 0);
+  std::vector<int> second_best(o.confidence ? nf : 0, 0);
   bool ok = false;
   {
     py::gil_scoped_release release;
-    auto solve = [&](const auto& polygons) {
+    auto solve = [&](const auto& polygons, auto with_confidence) {
       return IO::with_solvers(o.lp_solver, o.linear_solver, [&](auto& lp, auto sparse_solver) {
-        return CGAL::polygon_soup_winding_numbers(
-          points, polygons, curve, CGAL::make_property_map(labels),
+        const auto np =
           SWN::parameters::dual_chain(dual,
           SWN::parameters::winding_number_map(Corner_map{&start, &w},
           SWN::parameters::nonbounding_chain_map(Edge_value_map<int>{&edges, &G},
@@ -174,10 +176,26 @@ py::dict solve_on_soup(const Triangle_soup& soup, const Curve_arrays& curves, co
           SWN::parameters::concurrency(o.concurrency,
           SWN::parameters::lp_solver(std::ref(lp),
           SWN::parameters::report(std::ref(report)))))))))))))
-            .verbose(o.verbose).sparse_linear_solver(sparse_solver));
+            .verbose(o.verbose).sparse_linear_solver(sparse_solver);
+        if constexpr(!decltype(with_confidence)::value)
+          return CGAL::polygon_soup_winding_numbers(points, polygons, curve, CGAL::make_property_map(labels), np);
+        else
+          return CGAL::polygon_soup_winding_numbers(points, polygons, curve, CGAL::make_property_map(labels),
+                                                    SWN::parameters::label_confidence(std::ref(confidence),
+                                                    SWN::parameters::confidence_map(CGAL::make_property_map(face_cost),
+                                                    SWN::parameters::region_map(CGAL::make_property_map(region),
+                                                    SWN::parameters::second_best_label_map(CGAL::make_property_map(second_best), np)))));
       });
     };
-    ok = triangles ? solve(soup.triangles) : solve(soup.polygons);
+    if(o.confidence)
+    {
+      // the confidence outputs (a second instantiation of the solve): on the faces as polygons, triangles included
+      std::vector<std::vector<std::size_t>> polygons;
+      for(const auto& t : soup.triangles) polygons.emplace_back(t.begin(), t.end());
+      ok = solve(triangles ? polygons : soup.polygons, std::true_type());
+    }
+    else
+      ok = triangles ? solve(soup.triangles, std::false_type()) : solve(soup.polygons, std::false_type());
   }
   if(!ok) raise_failure(report);
 
@@ -205,6 +223,7 @@ py::dict solve_on_soup(const Triangle_soup& soup, const Curve_arrays& curves, co
   result["g"] = array_of(g);
   result["report"] = report_dict(report);
   result["warnings"] = string_list(warnings);
+  if(o.confidence) result["confidence"] = confidence_dict(confidence, face_cost, region, second_best);
   return result;
 }
 

@@ -11,6 +11,7 @@
 
 #include "swn_io/mesh_soup.h"
 
+#include <CGAL/Surface_winding_numbers/Label_confidence.h>
 #include <CGAL/Surface_winding_numbers/Solve_report.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -81,6 +82,10 @@ struct Curve_arrays
 
 /// the report as a dict, its fields under their C++ names, the timings (time_X) in a dict `times`
 py::dict report_dict(const CGAL::Surface_winding_numbers::Solve_report& r);
+/// the confidence outputs as a dict (the fields of swn.LabelConfidence): per face or polygon, the flip cost of
+/// its region, its region and its second-best label; per region, its `Label_region`
+py::dict confidence_dict(const CGAL::Surface_winding_numbers::Label_confidence& c, const std::vector<double>& face_cost,
+                         const std::vector<std::size_t>& region, const std::vector<int>& second_best);
 /// the library's failure as a Python exception with its message: ValueError for bad input, RuntimeError
 /// for a failed solver step
 [[noreturn]] void raise_failure(const CGAL::Surface_winding_numbers::Solve_report& r);

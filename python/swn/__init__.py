@@ -259,8 +259,8 @@ def winding_numbers(V, F, curves=None, multiplicities=None, *, dual_chain=None, 
     ``LINEAR_SOLVERS``), ``reduced_residual`` (the paper's Sec. 6 approximation),
     ``filter_nonbounding_loops`` (``False``: labels are the rounded jump-harmonic function, paper Fig. 27),
     ``anchor_face`` (a face whose label is 0 in its component, instead of the label covering the largest
-    area), ``confidence`` (``True``: the result's ``confidence``, a ``LabelConfidence``; triangle meshes
-    only), ``concurrency`` (``False``: the calling thread only), ``verbose`` (the steps on stderr).
+    area), ``confidence`` (``True``: the result's ``confidence``, a ``LabelConfidence``; on a soup per
+    input polygon), ``concurrency`` (``False``: the calling thread only), ``verbose`` (the steps on stderr).
 
     Returns a ``WindingNumbers``. Raises ``ValueError`` on bad input and bad settings and ``RuntimeError``
     when the solver fails, with the library's messages.

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 import swn
-from conftest import grid_disk, grid_rectangle_loop, quad_torus, torus_rectangle_loop
+from conftest import grid_disk, grid_rectangle_loop, mobius_strip, quad_torus, torus, torus_rectangle_loop
 
 
 def test_anchor_face_fixes_the_labels_constant():
@@ -67,7 +67,42 @@ def test_confidence_of_a_region_inside_a_loop(epsilon):
     assert swn.winding_numbers(V, F, [loop]).confidence is None
 
 
-def test_confidence_is_for_triangle_meshes():
-    V, Q, idx = quad_torus(16, 8)
-    with pytest.raises(ValueError, match="confidence: the library computes it on triangle meshes only"):
-        swn.winding_numbers(V, Q, [torus_rectangle_loop(idx, 3, 7, 2, 5)], confidence=True)
+@pytest.mark.parametrize("epsilon", [0.01, 0.05])
+def test_confidence_on_a_polygon_soup_is_that_of_every_polygons_region(epsilon):
+    # a quad torus (triangulated internally along the diagonal (i, j)-(i+1, j+1), as torus()) with a meridian
+    # and a loop around 4 x 4 quads: the region inside costs epsilon L (L in mean interior edge lengths, the
+    # diagonals included); the soup gives every quad the values of its region, the same as the triangulated
+    # torus gives its two triangles on the mesh route and on the soup route
+    nu, nv = 24, 12
+    V, Q, idx = quad_torus(nu, nv)
+    _, T, _ = torus(nu, nv)
+    loop = torus_rectangle_loop(idx, 10, 14, 2, 6)
+    curves = [[idx(3, j) for j in range(nv + 1)], loop]
+    s = swn.winding_numbers(V, Q, curves, epsilon=epsilon, confidence=True)
+    assert s.polygon_soup.startswith("face 0 has 4 vertices")
+    c = s.confidence
+    assert isinstance(c, swn.LabelConfidence) and len(c.regions) == 2
+    inside = np.zeros(len(Q), bool)
+    inside[[i * nv + j for i in range(10, 14) for j in range(2, 6)]] = True
+    k = c.region[inside][0]
+    assert (c.region[inside] == k).all() and (c.region[~inside] == 1 - k).all()
+    L = np.linalg.norm(V[loop[1:]] - V[loop[:-1]], axis=1).sum()
+    cost = epsilon * L / mean_interior_edge_length(V, T)
+    assert c.regions[k]["flip_cost"] == pytest.approx(cost, rel=1e-9)
+    assert c.regions[1 - k]["flip_cost"] == pytest.approx(cost, rel=1e-9)
+    assert c.regions[k]["faces"] == 32 and c.regions[1 - k]["faces"] == len(T) - 32   # triangles
+    assert (s.W[inside] == c.regions[k]["label"]).all() and (s.W[~inside] == c.regions[1 - k]["label"]).all()
+    assert np.allclose(c.face_cost, cost, rtol=1e-9) and c.face_cost.shape == (len(Q),)
+    assert c.second_best_region == k and (c.second_best_W == c.regions[1 - k]["label"]).all()
+    for route in (swn.winding_numbers(V, T, curves, epsilon=epsilon, confidence=True),
+                  swn.winding_numbers(V, T, curves, epsilon=epsilon, confidence=True, soup=True)):
+        t = route.confidence
+        assert (route.W == np.repeat(s.W, 2)).all() and (t.second_best_W == np.repeat(c.second_best_W, 2)).all()
+        assert np.allclose(t.face_cost, np.repeat(c.face_cost, 2), rtol=1e-12)
+        assert (t.region == np.repeat(c.region, 2)).all() and t.second_best_region == c.second_best_region
+        assert [r["faces"] for r in t.regions] == [r["faces"] for r in c.regions]
+    # a Möbius strip with a dual chain: two regions, the quads between the jumps and the others; none without asking
+    Vm, M = mobius_strip(12)
+    m = swn.winding_numbers(Vm, M, dual_chain=[[2, 3], [7, 6]], epsilon=epsilon, confidence=True).confidence
+    assert len(m.regions) == 2 and (m.region[3:7] == m.region[3]).all() and (np.delete(m.region, range(3, 7)) != m.region[3]).all()
+    assert swn.winding_numbers(V, Q, curves).confidence is None
