@@ -462,6 +462,60 @@ TEST(LibraryConformingCut, RefusedCurvesLeaveEverythingUnchanged)
   EXPECT_EQ(r.refinement_faces, 14u);
 }
 
+TEST(LibraryConformingCut, MinimumPieceEdgesAboveTheBoundIsRefused)
+{
+  // minimum_piece_edges = SIZE_MAX would split an edge 2^63 times: refused, nothing changed
+  Mesh m;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(tdata + "grid4.off", m));
+  const std::vector<VI> v = grid_vertices(m);
+  auto chain = m.add_property_map<Mesh::Edge_index, int>("e:chain", 0).first;
+  typedef SWN::Conforming_cut_result<Mesh> Result;
+  const std::size_t bound = Result::max_minimum_piece_edges;
+  ASSERT_EQ(bound, 65536u);
+  const std::vector<std::vector<PMP::Face_location<Mesh, double> > > short_piece{
+    {PMP::locate_vertex<double>(v[5], m), PMP::locate_vertex<double>(v[6], m)}};
+  for(std::size_t huge : {std::size_t(-1), std::size_t(1) << 63, bound + 1})
+  {
+    const auto r = SWN::conforming_cut(m, short_piece, chain, SWN::parameters::minimum_piece_edges(huge));
+    EXPECT_EQ(r.error, Result::INVALID_PARAMETER);
+    EXPECT_NE(r.message.find("minimum_piece_edges is " + std::to_string(huge)), std::string::npos) << r.message;
+    EXPECT_EQ(m.number_of_vertices(), 16u);
+    EXPECT_EQ(m.number_of_faces(), 18u);
+    for(auto e : m.edges()) EXPECT_EQ(chain[e], 0);
+  }
+  // without the refinement the value is not used
+  Mesh copy = m;
+  auto copy_chain = copy.add_property_map<Mesh::Edge_index, int>("e:chain2", 0).first;
+  const std::vector<std::vector<PMP::Face_location<Mesh, double> > > copy_piece{
+    {PMP::locate_vertex<double>(VI(5), copy), PMP::locate_vertex<double>(VI(6), copy)}};
+  EXPECT_TRUE(bool(SWN::conforming_cut(copy, copy_piece, copy_chain, SWN::parameters::refine_short_pieces(false,
+                                         SWN::parameters::minimum_piece_edges(std::size_t(-1))))));
+  // the bound itself: the one-edge piece becomes 2^16 edges
+  const auto r = SWN::conforming_cut(m, short_piece, chain, SWN::parameters::minimum_piece_edges(bound));
+  ASSERT_TRUE(bool(r)) << r.message;
+  EXPECT_EQ(r.refined_pieces, 1u);
+  EXPECT_EQ(r.refinement_vertices, bound - 1);
+  std::size_t curve_edges = 0;
+  for(auto e : m.edges()) curve_edges += (chain[e] != 0);
+  EXPECT_EQ(curve_edges, bound);
+  // the tool's cut of a curve file: std::invalid_argument, the setting named
+  Mesh g;
+  IO::read_mesh(tdata + "grid4.off", g);
+  std::istringstream is("# swn polylines\n5 6\n");
+  IO::Cut_options options;
+  options.min_piece_edges = std::size_t(-1);
+  const auto curves = IO::read_curves(is, "one.txt", g);
+  try
+  {
+    IO::conforming_cut(g, curves, options);
+    ADD_FAILURE() << "no exception";
+  }
+  catch(const std::invalid_argument& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("minimum_piece_edges"), std::string::npos) << e.what();
+  }
+}
+
 TEST(LibraryConformingCut, CrossingSegmentsGetAVertexWhereTheyCross)
 {
   Mesh m;

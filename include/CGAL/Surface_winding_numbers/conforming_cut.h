@@ -48,8 +48,12 @@ struct Conforming_cut_result
     NO_ERROR,          ///< the cut was done
     INVALID_LOCATION,  ///< a point has no face, coordinates that are negative or not finite, or lies strictly inside its face
     NO_COMMON_FACE,    ///< the two points of a segment lie on no common face
-    CROSSING_SEGMENTS  ///< not returned: segments that cross inside a face get a vertex where they cross
+    CROSSING_SEGMENTS, ///< not returned: segments that cross inside a face get a vertex where they cross
+    INVALID_PARAMETER  ///< `minimum_piece_edges` is above `max_minimum_piece_edges` (with the refinement on)
   };
+
+  /// the largest `minimum_piece_edges` accepted: a short piece is refined into at most this many edges
+  static constexpr std::size_t max_minimum_piece_edges = std::size_t(1) << 16;
 
   /// `NO_ERROR`, or why the cut was refused (the mesh and the chain are then unchanged)
   Error error = NO_ERROR;
@@ -180,7 +184,8 @@ the curves, then the faces of the cut and the crossings face by face in the orde
 of the refinement.
 
 Nothing is changed when the curves are refused: a point strictly inside a face, or two consecutive points
-on no common face (the result tells which).
+on no common face (the result tells which), or when `minimum_piece_edges` is above
+`Conforming_cut_result::max_minimum_piece_edges` with the refinement on.
 
 \tparam TriangleMesh a model of `MutableFaceGraph`, `FaceListGraph`, `EdgeListGraph` and `VertexListGraph` whose
         faces are triangles
@@ -213,7 +218,8 @@ on no common face (the result tells which).
     \cgalParamDefault{`true`}
   \cgalParamNEnd
   \cgalParamNBegin{Surface_winding_numbers::parameters::minimum_piece_edges}
-    \cgalParamDescription{pieces with fewer edges than this are refined}
+    \cgalParamDescription{pieces with fewer edges than this are refined; a value above
+      `Conforming_cut_result::max_minimum_piece_edges` (65536) is refused (`INVALID_PARAMETER`) when the refinement is on}
     \cgalParamType{`std::size_t`}
     \cgalParamDefault{8}
   \cgalParamNEnd
@@ -266,6 +272,10 @@ conforming_cut(TriangleMesh& tm, const CurveRange& curves, ChainMap chain,
     result.curve_vertices.clear();
     return result;
   };
+  if(refine && min_edges > Result::max_minimum_piece_edges)
+    return refuse(Result::INVALID_PARAMETER, 0, 0,
+                  "minimum_piece_edges is " + std::to_string(min_edges) + ", above the largest accepted value " +
+                  std::to_string(Result::max_minimum_piece_edges));
 
   // ---- the points, deduplicated: vertices by a vertex map, edge points per edge of the input
   std::vector<internal::Cut_point<TriangleMesh, FT> > points;

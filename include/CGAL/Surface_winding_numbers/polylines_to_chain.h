@@ -141,7 +141,8 @@ that brings its bounding box to unit size, so that a mesh and its copies scaled 
 
 \returns what was done, with warnings for the polylines that gave nothing (empty, or with no point near
 the surface); converts to `false` and changes nothing if a point has a coordinate that is not finite
-(the error names the polyline and the point), or a vertex of the mesh.
+(the error names the polyline and the point), or a vertex of the mesh, or if `conforming_cut()` refuses
+the curves (`minimum_piece_edges` above `Conforming_cut_result::max_minimum_piece_edges`).
 */
 template <class TriangleMesh, class PolylineRange, class ChainMap,
           class NamedParameters = CGAL::parameters::Default_named_parameters>

@@ -37,7 +37,8 @@ struct Cut_options
 {
   /// split the edges of short curve pieces ending at interior endpoints
   bool refine_short_pieces = true;
-  /// pieces with fewer edges than this are refined
+  /// pieces with fewer edges than this are refined; at most `Conforming_cut_result::max_minimum_piece_edges`
+  /// (65536) with the refinement on, else `conforming_cut()` throws `std::invalid_argument`
   std::size_t min_piece_edges = 8;
 };
 
@@ -193,6 +194,8 @@ Cut_result<Point> conforming_cut(const CGAL::Surface_mesh<Point>& mesh, const st
     result.mesh, segments, chain,
     parameters::refine_short_pieces(options.refine_short_pieces, parameters::minimum_piece_edges(options.min_piece_edges,
     parameters::face_origin_map(origin))));
+  if(cut.error == cut.INVALID_PARAMETER)   // a setting, not the curve file
+    throw std::invalid_argument(cut.message);
   if(!cut)
   {
     const auto& [file, line] = where[cut.curve];

@@ -112,7 +112,7 @@ std::size_t refine_short_pieces(TriangleMesh& tm, VertexPointMap vpm, FlowMap fl
   {
     const std::size_t q = min_edges / piece.size();
     std::size_t k = 0;
-    while((std::size_t(1) << (k + 1)) <= q) ++k;
+    while(k + 1 < 8 * sizeof(std::size_t) && (std::size_t(1) << (k + 1)) <= q) ++k;   // no shift past the width
     k = (std::max<std::size_t>)(k, 1);   // every edge of a short piece is split at least once
     for(halfedge_descriptor h : piece)
       split_chain_edge(tm, vpm, flow, origin, h, k);
