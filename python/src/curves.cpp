@@ -116,12 +116,8 @@ py::dict put_on_mesh(Mesh& mesh, const Polylines_3& polylines, std::optional<dou
 // the triangle mesh of (V, F), its warnings in `info`
 void mesh_of(py::handle V, py::handle F, Mesh& mesh, py::dict& info)
 {
-  const Triangle_soup soup = soup_from_arrays(V, F);
   std::vector<std::string> warnings;
-  {
-    py::gil_scoped_release release;
-    mesh_from_soup(soup, mesh, warnings);
-  }
+  mesh_from_arrays(V, F, mesh, warnings);
   info["warnings"] = string_list(warnings);
 }
 

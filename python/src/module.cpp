@@ -3,8 +3,9 @@
 //
 // The module `swn._swn`: numpy arrays to and from a soup and a Surface_mesh, the report as a dict, the
 // exception `InputError`, `_winding_numbers()` (a triangle mesh to solver.cpp, anything else to soup.cpp as
-// a polygon soup), and the registration of the solver (solver.cpp) and of the readers (readers.cpp). The
-// Python package `swn` (python/swn/__init__.py) wraps it.
+// a polygon soup), and the registration of the solver (solver.cpp), the readers (readers.cpp), the curves
+// off the mesh (curves.cpp) and the selection cleanup (selection.cpp). The Python package `swn`
+// (python/swn/__init__.py) wraps it.
 
 #include "swn_python.h"
 
@@ -166,6 +167,13 @@ void mesh_from_soup(const Triangle_soup& soup, Mesh& mesh, std::vector<std::stri
     throw py::value_error(e.reason);
   }
   warnings = info.warnings;
+}
+
+void mesh_from_arrays(py::handle V, py::handle F, Mesh& mesh, std::vector<std::string>& warnings)
+{
+  const Triangle_soup soup = soup_from_arrays(V, F);
+  py::gil_scoped_release release;
+  mesh_from_soup(soup, mesh, warnings);
 }
 
 py::array_t<double> vertex_array(const Mesh& mesh)
@@ -348,4 +356,5 @@ PYBIND11_MODULE(_swn, m)
   swn_python::bind_solver(m);
   swn_python::bind_readers(m);
   swn_python::bind_curves(m);
+  swn_python::bind_selection(m);
 }

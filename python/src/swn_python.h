@@ -4,7 +4,8 @@
 // The Python module `swn._swn`: what its source files share. module.cpp converts between numpy arrays,
 // soups and a Surface_mesh, registers the exceptions and binds `_winding_numbers()` (either route),
 // solver.cpp binds the solver on a triangle mesh, soup.cpp solves polygon soups, readers.cpp binds the
-// tool's mesh and curve readers and its conforming cut, curves.cpp the library's curves off the mesh.
+// tool's mesh and curve readers and its conforming cut, curves.cpp the library's curves off the mesh,
+// selection.cpp its selection cleanup.
 
 #ifndef SWN_PYTHON_H
 #define SWN_PYTHON_H
@@ -45,6 +46,9 @@ Triangle_soup soup_from_arrays(py::handle V, py::handle F);
 /// the GIL. Throws `ValueError` with the reader's message (an index out of range, a repeated vertex, a
 /// nonmanifold edge or vertex, inconsistent orientation, no face); `warnings` gets its warnings.
 void mesh_from_soup(const Triangle_soup& soup, Mesh& mesh, std::vector<std::string>& warnings);
+
+/// the mesh of the arrays `V` and `F` (soup_from_arrays() then, without the GIL, mesh_from_soup())
+void mesh_from_arrays(py::handle V, py::handle F, Mesh& mesh, std::vector<std::string>& warnings);
 
 /// n x 3 float64: the points of the vertices, by index
 py::array_t<double> vertex_array(const Mesh& mesh);
@@ -113,6 +117,8 @@ void bind_solver(py::module_& m);
 void bind_readers(py::module_& m);
 /// `_polylines_to_chain`, `_stamp_polylines` (curves.cpp)
 void bind_curves(py::module_& m);
+/// `_clean_face_selection`, `_clean_edge_selection` (selection.cpp)
+void bind_selection(py::module_& m);
 
 } // namespace swn_python
 

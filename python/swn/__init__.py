@@ -2,7 +2,9 @@
 
 numpy in, numpy out: ``winding_numbers(V, F, curves)`` solves once (triangle meshes, polygon meshes and
 polygon soups), ``Solver(V, F)`` keeps a triangle mesh for many curves, ``read_mesh()``, ``read_curve()``
-and ``load()`` are the readers of the ``swn`` tool. The manual is python/README.md in the source tree.
+and ``load()`` are the readers of the ``swn`` tool, ``polylines_to_chain()`` and ``stamp_polylines()`` put
+curves drawn off the mesh onto it, ``clean_face_selection()`` and ``clean_edge_selection()`` turn noisy
+selections into regions. The manual is python/README.md in the source tree.
 
 Conventions
 -----------
@@ -29,7 +31,8 @@ from . import _swn
 
 __version__ = _swn.__version__
 __all__ = ["winding_numbers", "Solver", "WindingNumbers", "read_mesh", "read_curve", "load", "polylines_to_chain",
-           "stamp_polylines", "CurveOnMesh", "LabelConfidence", "InputError", "MeshWarning", "LP_SOLVERS",
+           "stamp_polylines", "CurveOnMesh", "clean_face_selection", "clean_edge_selection", "CleanSelection",
+           "LabelConfidence", "InputError", "MeshWarning", "LP_SOLVERS",
            "LINEAR_SOLVERS"]
 
 #: the residual solvers compiled in (``lp_solver=``), the default first: "lemon" (multilevel minimum-cost
@@ -95,6 +98,16 @@ class CurveOnMesh:
     multiplicities: np.ndarray  #: (k,) int64: how many times the curves run along each of them (positive)
     info: dict                  #: vertices and faces added by the cut and the refinement, warnings, ...
     face_origin: np.ndarray     #: (m',) int64: the input face every face is a piece of (itself for faces not cut)
+
+
+@dataclass(eq=False)
+class CleanSelection:
+    """A selection cleaned by ``clean_face_selection()`` or ``clean_edge_selection()``."""
+
+    selected: np.ndarray  #: (m,) bool: the faces of the cleaned region, in the order of F
+    bounding: np.ndarray  #: (E,) int32: its border as a closed chain on ``edges``, counter-clockwise around it
+    edges: np.ndarray     #: (E, 2) int64: the vertex pairs the chain refers to (as ``Solver.edges``)
+    report: dict          #: what the solve did (``curve_edges``: the selection's border kept, ``interior_endpoints``: the ends of its gaps)
 
 
 def _warn(messages, stacklevel):
@@ -274,6 +287,71 @@ def winding_numbers(V, F, curves=None, multiplicities=None, *, dual_chain=None, 
     _warn(r["warnings"], 2)
     r["edges"].flags.writeable = False
     return _result(r, r["edges"])
+
+
+def _cleaned(r):
+    _warn(r["warnings"], 3)
+    r["edges"].flags.writeable = False
+    return CleanSelection(selected=r["selected"], bounding=r["bounding"], edges=r["edges"], report=r["report"])
+
+
+def clean_face_selection(V, F, selection, *, epsilon=0.01, lp_solver=None, linear_solver=None, reduced_residual=False,
+                         filter_nonbounding_loops=True, concurrency=True, verbose=False):
+    """Turns a noisy selection of faces of the triangle mesh (V, F) into a clean region (the library's
+    ``clean_face_selection()``, paper Sec. 5.5).
+
+    ``selection``: a boolean mask of the m faces, or an integer array of the selected faces' indices. A face
+    whose state (selected or not) differs from that of more than half of the faces around its vertices is
+    noise: the border of the selection without the sides of noise faces is the curve, whose winding numbers
+    close its gaps along short paths and filter out what remains of small pieces. The cleaned region is the set
+    of faces whose label is above the reference label of their connected component: the label covering the
+    most unselected faces (a component whose faces are all selected stays selected). A cluster of noise large
+    enough that its faces see mostly their own state is kept. The settings are those of ``winding_numbers()``.
+    Returns a ``CleanSelection``. Raises ``ValueError`` on a bad mesh, selection or setting, ``RuntimeError``
+    when the solver fails.
+    """
+    m = len(F)
+    s = np.asarray(selection)
+    if s.dtype == bool:
+        if s.shape != (m,):
+            raise ValueError(f"selection: a boolean mask needs one value per face ({m}), not shape {s.shape}")
+        mask = s
+    elif s.dtype.kind in "iu" and s.ndim == 1:
+        if s.size and (s.min() < 0 or s.max() >= m):
+            raise ValueError(f"selection: face index {s.min() if s.min() < 0 else s.max()} is out of range ({m} faces)")
+        mask = np.zeros(m, bool)
+        mask[s] = True
+    else:
+        raise TypeError(f"selection must be a boolean mask of the faces or an array of face indices, not {s.dtype} "
+                        f"of shape {s.shape}")
+    options = _options(epsilon, lp_solver, linear_solver, reduced_residual, filter_nonbounding_loops, concurrency, verbose)
+    return _cleaned(_swn._clean_face_selection(V, F, mask.view(np.uint8), options))
+
+
+def clean_edge_selection(V, F, selection, *, epsilon=0.01, lp_solver=None, linear_solver=None, reduced_residual=False,
+                         filter_nonbounding_loops=True, concurrency=True, verbose=False):
+    """Turns a noisy selection of unoriented edges of the triangle mesh (V, F), the border of a region with gaps
+    and spurious pieces, into a clean region (the library's ``clean_edge_selection()``, paper Fig. 25).
+
+    ``selection``: the selected edges as vertex pairs, an integer array of shape (k, 2) (either way round), or a
+    boolean mask in the order of the mesh's ``edges`` (``Solver.edges``, the ``edges`` of a result). The
+    selection is oriented (``orient_edge_selection()``: each piece counter-clockwise around the centroid of its
+    cluster), its winding numbers close the gaps and filter out the spurious pieces, and the region is the set
+    of faces whose label is above the smallest label of their connected component: the inside of the loops,
+    whether it covers less or more than half of the surface. The settings are those of ``winding_numbers()``.
+    Returns a ``CleanSelection``. Raises ``ValueError`` on a bad mesh, selection or setting, ``RuntimeError``
+    when the solver fails.
+    """
+    s = np.asarray(selection)
+    if s.dtype == bool and s.ndim == 1:
+        pairs, mask = s.astype(np.int64).reshape(-1, 1), True
+    elif s.size == 0 or (s.dtype.kind in "iu" and s.ndim == 2 and s.shape[1] == 2):
+        pairs, mask = np.ascontiguousarray(s.reshape(-1, 2).astype(np.int64, copy=False)), False
+    else:
+        raise TypeError(f"selection must be edges as vertex pairs of shape (k, 2) or a boolean mask of the edges, "
+                        f"not {s.dtype} of shape {s.shape}")
+    options = _options(epsilon, lp_solver, linear_solver, reduced_residual, filter_nonbounding_loops, concurrency, verbose)
+    return _cleaned(_swn._clean_edge_selection(V, F, pairs, mask, options))
 
 
 def read_mesh(path):

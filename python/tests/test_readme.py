@@ -35,7 +35,7 @@ def test_every_name_and_setting_is_documented():
     for name in swn.__all__:
         assert f"`{name}" in text or f"swn.{name}" in text, name
     functions = [swn.winding_numbers, swn.Solver, swn.Solver.solve, swn.read_mesh, swn.read_curve, swn.load]
-    functions += [getattr(swn, f) for f in ("polylines_to_chain", "stamp_polylines") if hasattr(swn, f)]
+    functions += [swn.polylines_to_chain, swn.stamp_polylines, swn.clean_face_selection, swn.clean_edge_selection]
     for f in functions:
         for p in inspect.signature(f).parameters.values():
             if p.kind == p.KEYWORD_ONLY:
