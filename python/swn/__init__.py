@@ -300,9 +300,9 @@ def clean_face_selection(V, F, selection, *, epsilon=0.01, lp_solver=None, linea
     """Turns a noisy selection of faces of the triangle mesh (V, F) into a clean region (the library's
     ``clean_face_selection()``, paper Sec. 5.5).
 
-    ``selection``: a boolean mask of the m faces, or an integer array of the selected faces' indices. A face
-    whose state (selected or not) differs from that of more than half of the faces around its vertices is
-    noise: the border of the selection without the sides of noise faces is the curve, whose winding numbers
+    ``selection``: a boolean mask of the m faces, or an integer array of the selected faces' indices (m integers
+    all 0 or 1 are refused as an ambiguous mask). A face whose state (selected or not) differs from that of more
+    than half of the faces around its vertices is noise: the border of the selection without the sides of noise faces is the curve, whose winding numbers
     close its gaps along short paths and filter out what remains of small pieces. The cleaned region is the set
     of faces whose label is above the reference label of their connected component: the label covering the
     most unselected faces (a component whose faces are all selected stays selected). A cluster of noise large
@@ -317,6 +317,9 @@ def clean_face_selection(V, F, selection, *, epsilon=0.01, lp_solver=None, linea
             raise ValueError(f"selection: a boolean mask needs one value per face ({m}), not shape {s.shape}")
         mask = s
     elif s.dtype.kind in "iu" and s.ndim == 1:
+        if m > 2 and s.size == m and np.isin(s, (0, 1)).all():
+            raise ValueError(f"selection: {m} integers, all 0 or 1, look like a mask of the faces: give it as booleans "
+                             "(selection.astype(bool)) or give face indices")
         if s.size and (s.min() < 0 or s.max() >= m):
             raise ValueError(f"selection: face index {s.min() if s.min() < 0 else s.max()} is out of range ({m} faces)")
         mask = np.zeros(m, bool)

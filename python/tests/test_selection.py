@@ -117,11 +117,23 @@ def test_clean_edge_selection_closes_gaps_and_drops_spurious_pieces():
     assert (swn.clean_edge_selection(VG, FG, h[np.arange(len(h)) % 3 != 1]).selected == big).all()
 
 
+def test_a_rectangles_corners_across_the_diagonals_are_cut_off():
+    # on the grid (diagonals from (a, b) to (a + 1, b + 1)) the outer triangle of the lower-right and of the
+    # upper-left corner cell has more neighbours outside the rectangle than inside: noise, cut along its diagonal
+    _, inside = grid_rectangle_loop(N, 5, 15, 4, 13)
+    rectangle = np.zeros(len(FG), bool)
+    rectangle[inside] = True
+    c = swn.clean_face_selection(VG, FG, rectangle)
+    assert np.flatnonzero(c.selected != rectangle).tolist() == [2 * (14 + N * 4), 2 * (5 + N * 12) + 1]
+
+
 def test_bad_selections_are_refused():
     with pytest.raises(ValueError, match=r"selection: a boolean mask needs one value per face \(800\), not shape \(3,\)"):
         swn.clean_face_selection(VG, FG, np.ones(3, bool))
     with pytest.raises(ValueError, match=r"selection: face index 800 is out of range \(800 faces\)"):
         swn.clean_face_selection(VG, FG, [800])
+    with pytest.raises(ValueError, match=r"selection: 800 integers, all 0 or 1, look like a mask of the faces"):
+        swn.clean_face_selection(VG, FG, np.zeros(len(FG), np.int8))
     with pytest.raises(TypeError, match="selection must be a boolean mask of the faces or an array of face indices"):
         swn.clean_face_selection(VG, FG, [0.5])
     with pytest.raises(ValueError, match=r"selection\[1\]: vertices 0 and 23 are not joined by an edge of the mesh"):
