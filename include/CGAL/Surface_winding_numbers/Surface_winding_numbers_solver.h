@@ -130,7 +130,7 @@ Core_result solve_with_parameters(Winding_number_core<LA>& core, const std::vect
   using CGAL::parameters::get_parameter_reference;
   namespace snp = Surface_winding_numbers::internal_np;
   Solve_options options;
-  options.epsilon = choose_parameter(get_parameter(np, snp::epsilon), 0.01);
+  options.epsilon = choose_parameter(get_parameter(np, snp::epsilon), default_epsilon);
   options.verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
   options.reduced_residual = choose_parameter(get_parameter(np, snp::use_reduced_residual), false);
   options.concurrent = allows_threads(choose_parameter(get_parameter(np, snp::concurrency), CGAL::Parallel_tag()));
@@ -163,7 +163,7 @@ void write_confidence(const Mesh_tables& m, const Core_result& r, const std::vec
   constexpr bool smap = !is_default_parameter<NamedParameters, snp::second_best_label_map_t>::value;
   if constexpr(conf || cmap || rmap || smap)
   {
-    const double epsilon = CGAL::parameters::choose_parameter(get_parameter(np, snp::epsilon), 0.01);
+    const double epsilon = CGAL::parameters::choose_parameter(get_parameter(np, snp::epsilon), default_epsilon);
     const Confidence c = label_confidence(m, chain, r.G, r.labels, epsilon);
     auto triangle = [&](const auto& key) { return m.polygon_triangle(polygon_of(key)); };
     if constexpr(conf)

@@ -35,9 +35,12 @@ namespace CGAL {
 namespace Surface_winding_numbers {
 namespace internal {
 
+// The default of the named parameter epsilon (Eq. 11's relative cost of residual jumps across the curve).
+inline constexpr double default_epsilon = 0.01;
+
 struct Solve_options
 {
-  double epsilon = 0.01;
+  double epsilon = default_epsilon;
   bool verbose = false;
   bool reduced_residual = false;   // paper Sec. 6 instead of the exact Eq. 11
   bool concurrent = true;   // a second thread (named parameter concurrency): the Hodge projection's per-mesh part, the residual solver's
