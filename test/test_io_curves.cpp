@@ -419,4 +419,52 @@ TEST(CurvesOffMesh, SelfCrossingStrokesAreCutOnceWithAVertexAtEveryCrossing)
   }
 }
 
+TEST(CurvesOffMesh, ThreeHundredChordsCrossingInOneFaceAreCutInOnce)
+{
+  // n chords of one face, every two crossing: the tangents from (a, 0) to (1, a) of a parabola, no three
+  // through a point. The cut searched all pieces of the face for every piece of chord it split, quadratic
+  // in the crossings (a 500-point star stroke: 31,116 crossings, 57 s; fuzz timeouts under ASan).
+  // Euler's formula gives the answer: C(n, 2) crossing vertices, 2 C(n, 2) + 2n + 1 triangles in the face,
+  // n + 1 in its neighbour across the side x = 1.
+  Mesh m;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(tdata + "grid4.off", m));
+  const Mesh input = m;
+  const VI v0(0), v1(1), v5(5);
+  ASSERT_EQ(m.point(v5), Point(1, 1, 0));
+  const std::size_t n = 300, crossings = n * (n - 1) / 2;
+  std::vector<std::vector<PMP::Face_location<Mesh, double> > > chords;
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const double a = 0.1 + 0.8 * double(i) / double(n - 1);
+    chords.push_back({PMP::locate_on_halfedge(m.halfedge(v0, v1), a, m), PMP::locate_on_halfedge(m.halfedge(v1, v5), a, m)});
+  }
+  auto chain = m.add_property_map<Mesh::Edge_index, int>("e:chain", 0).first;
+  auto origin = m.add_property_map<FI, FI>("f:origin", FI()).first;
+  const auto r = SWN::conforming_cut(m, chords, chain, SWN::parameters::refine_short_pieces(false,
+                                     SWN::parameters::face_origin_map(origin)));
+  ASSERT_TRUE(bool(r)) << r.message;
+  EXPECT_EQ(r.crossing_vertices, crossings);
+  EXPECT_EQ(r.cut_vertices, 2 * n + crossings);
+  EXPECT_EQ(r.cut_faces, 2 * crossings + 2 * n + n);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(m) && CGAL::is_triangle_mesh(m));
+  expect_origins_tile_input(input, m, origin);
+  // every chord runs through its n - 1 crossings: n edges each, from its first point to its last
+  std::size_t chain_edges = 0;
+  std::map<VI, int> boundary;
+  for(auto e : m.edges())
+  {
+    const int c = chain[e];
+    chain_edges += (c != 0);
+    boundary[m.target(m.halfedge(e))] += c;
+    boundary[m.source(m.halfedge(e))] -= c;
+  }
+  EXPECT_EQ(chain_edges, n * n);
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    EXPECT_EQ(boundary[r.curve_vertices[i][0]], -1);
+    EXPECT_EQ(boundary[r.curve_vertices[i][1]], 1);
+  }
+  for(FI f : m.faces()) EXPECT_GT(PMP::face_area(f, m), 0.) << "face " << f;
+}
+
 } // namespace

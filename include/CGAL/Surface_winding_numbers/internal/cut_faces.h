@@ -142,7 +142,8 @@ face_loop(typename boost::graph_traits<TriangleMesh>::face_descriptor f, const T
   (so no triangle has three collinear vertices), the ear with the largest smallest angle first, and never
   an ear that would leave fewer than three corners. The descriptor `f` stays with the piece, and in the
   end the triangle, that has the corner `keep`, and `target(halfedge(f, tm))` is `keep`. New faces are
-  added with `add_face()` (appended, for `Surface_mesh`). Every piece gets `f` in `origin` (face -> face).
+  added with `add_face()` (appended, for `Surface_mesh`). Every piece gets `f` in `origin` (face -> face),
+  and no face outside `f` has `f` there (the pieces are told from their neighbours by it).
 */
 template <class TriangleMesh, class VertexPointMap, class LineMap, class OriginMap>
 void cut_and_triangulate_face(
@@ -180,20 +181,21 @@ void cut_and_triangulate_face(
     if(target(g, tm) == corner[(side + 1) % 3]) ++side;
   }
 
-  // splits the piece that has u and v on its border along uv (nothing if uv is a side of it), on `chord_line`
+  // splits the piece that has u and v on its border along uv (nothing if uv is a side of it), on `chord_line`.
+  // The piece is found among the faces around u (the pieces of f are the faces whose origin is f): searching
+  // all pieces made the cut quadratic in the crossings of a face.
+  put(origin, f, f);
   std::vector<face_descriptor> pieces(1, f);
   auto split_piece = [&](vertex_descriptor u, vertex_descriptor v, int chord_line) {
     halfedge_descriptor hu = Traits::null_halfedge(), hv = Traits::null_halfedge();
     face_descriptor piece = Traits::null_face();
-    for(face_descriptor p : pieces)
+    for(halfedge_descriptor gu : CGAL::halfedges_around_target(u, tm))
     {
-      hu = hv = Traits::null_halfedge();
-      for(halfedge_descriptor g : CGAL::halfedges_around_face(halfedge(p, tm), tm))
-      {
-        if(target(g, tm) == u) hu = g;
+      if(is_border(gu, tm) || get(origin, face(gu, tm)) != f) continue;
+      hv = Traits::null_halfedge();
+      for(halfedge_descriptor g : CGAL::halfedges_around_face(gu, tm))
         if(target(g, tm) == v) hv = g;
-      }
-      if(hu != Traits::null_halfedge() && hv != Traits::null_halfedge()) { piece = p; break; }
+      if(hv != Traits::null_halfedge()) { hu = gu; piece = face(gu, tm); break; }
     }
     CGAL_assertion(piece != Traits::null_face());
     if(piece == Traits::null_face() || target(next(hu, tm), tm) == v || target(next(hv, tm), tm) == u)
