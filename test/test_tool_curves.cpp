@@ -318,3 +318,50 @@ TEST(ToolCurves, StampOnATinyMeshWorksOrBlamesTheMesh)
 }
 
 } // namespace
+
+TEST(ToolCurves, CurveAlongTheBorderOfATriangleMeshIsBlamedAtItsLine)
+{
+  // issue 42, item 6, the triangle-mesh route (the soup route: ToolSoup): the solver refused the chain on a
+  // border edge naming the mesh and a 0-based edge; the curve's file and line are blamed, as on the soup route
+  const fs::path dir = fresh_dir("border_curves");
+  fs::create_directories(dir);
+  // along the bottom border 0 -> 1 -> 2 of the 4 x 4 grid (line 2), and only its second segment (line 3)
+  std::ofstream(dir / "along.txt") << "# swn polylines\n0 1 2\n";
+  std::ofstream(dir / "second.txt") << "# swn polylines\n5 6 10 9 5\n6 7 3\n";
+  // the authors' format: from a quarter to three quarters of edge 0 (0 -> 1, on the border), two vertices
+  // of the cut (line 4)
+  std::ofstream(dir / "half.txt") << "#offset 0\ne 0 0.25\ne 0 0.75\nl 0 1\n";
+  struct Case { std::string file, where, what; };
+  const Case cases[] = {
+    {"along.txt", "along.txt:2: ", "the curve runs along the edge from vertex 0 to vertex 1, on the border of the mesh"},
+    {"second.txt", "second.txt:3: ", "the curve runs along the edge from vertex 3 to vertex 7, on the border of the mesh"},
+    {"half.txt", "half.txt:4: ", "the curve runs along the edge from vertex 0 to vertex 1, on the border of the mesh"}};
+  for(const Case& c : cases)
+  {
+    const fs::path out = dir / "out";
+    const Tool_run r = run(grid + " --curve '" + (dir / c.file).string() + "' --output-dir '" + out.string() + "'");
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_NE(r.err.find("swn: error: " + (dir / c.where).string() + c.what), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(out));
+  }
+  // there and back along the border cancels: no error, the loop inside gives its area
+  std::ofstream(dir / "cancel.txt") << "# swn polylines\n0 1 2 1 0\n5 6 10 9 5\n";
+  const std::map<int, double> areas = run_and_read_areas(grid + " --curve '" + (dir / "cancel.txt").string() + "'", dir / "cancel");
+  EXPECT_NEAR(areas.at(1), 1., 1e-12);
+  // the `l` records of an OBJ mesh along its border: the mesh file and the record's line
+  std::ofstream obj(dir / "mesh_with_border_curve.obj");
+  for(int j = 0; j < 4; ++j)
+    for(int i = 0; i < 4; ++i) obj << "v " << i << " " << j << " 0\n";
+  for(int j = 0; j < 3; ++j)
+    for(int i = 0; i < 3; ++i)
+    {
+      const int a = 4 * j + i + 1;
+      obj << "f " << a << " " << a + 1 << " " << a + 5 << "\nf " << a << " " << a + 5 << " " << a + 4 << "\n";
+    }
+  obj << "l 6 7 11 10 6\nl 16 12\n";   // a loop inside (line 35), then along the right border (line 36)
+  obj.close();
+  const Tool_run r = run("'" + (dir / "mesh_with_border_curve.obj").string() + "' --output-dir '" + (dir / "obj").string() + "'");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("mesh_with_border_curve.obj:36: the curve runs along the edge from vertex 11 to vertex 15"), std::string::npos) << r.err;
+  fs::remove_all(dir);
+}

@@ -110,6 +110,63 @@ std::vector<int> vertex_curve_chain(const CGAL::Surface_mesh<Point>& mesh, const
   return chain;
 }
 
+namespace internal {
+
+// Curves may end on the border of the mesh but not run along it (the solver refuses a chain on a border
+// edge, naming the mesh). After the cut, a segment whose two vertices `ends[k]` are joined by border edges
+// through vertices added by the cut (indices from `input_vertices` on: the segment ran along one edge of the
+// input) is blamed, at its file and line `where[k]`, if one of those edges keeps a chain value.
+template <class Point, class Vertex>
+void refuse_curves_along_the_border(const CGAL::Surface_mesh<Point>& mesh, const std::vector<int>& chain,
+                                    std::size_t input_vertices, const std::vector<std::vector<Vertex> >& ends,
+                                    const std::vector<std::pair<const std::string*, std::size_t> >& where)
+{
+  typedef CGAL::Surface_mesh<Point> Mesh;
+  typedef typename Mesh::Halfedge_index Halfedge_index;
+  bool any = false;
+  for(auto e : mesh.edges()) any = any || (chain[std::size_t(e)] != 0 && mesh.is_border(e));
+  if(!any) return;
+  // from the border halfedge h on, in the border's direction (forward) or against it, until `to` or a vertex of
+  // the input: the vertex reached, and whether an edge on the way keeps a chain value
+  auto walk = [&](Halfedge_index h, bool forward, Vertex to, bool& charged) {
+    for(;;)
+    {
+      charged = charged || chain[std::size_t(mesh.edge(h))] != 0;
+      const Vertex v = forward ? mesh.target(h) : mesh.source(h);
+      if(v == to || std::size_t(v) < input_vertices) return v;
+      h = forward ? mesh.next(h) : mesh.prev(h);
+    }
+  };
+  for(std::size_t k = 0; k < ends.size(); ++k)
+  {
+    const Vertex a = ends[k][0], b = ends[k][1];
+    if(a == Mesh::null_vertex() || b == Mesh::null_vertex() || !mesh.is_border(a) || !mesh.is_border(b)) continue;
+    Halfedge_index in = Mesh::null_halfedge();   // the border halfedge into a
+    for(Halfedge_index h : CGAL::halfedges_around_target(a, mesh))
+      if(mesh.is_border(h)) in = h;
+    if(in == Mesh::null_halfedge()) continue;
+    for(bool forward : {true, false})
+    {
+      bool charged = false;
+      if(walk(forward ? mesh.next(in) : in, forward, b, charged) != b || !charged) continue;
+      // the edge of the input: its two vertices of the input, from a away from b and from b away from a
+      bool ignored = false;
+      Vertex from = a, to = b;
+      if(std::size_t(a) >= input_vertices) from = walk(forward ? in : mesh.next(in), !forward, Mesh::null_vertex(), ignored);
+      Halfedge_index out = Mesh::null_halfedge();
+      for(Halfedge_index h : CGAL::halfedges_around_target(b, mesh))
+        if(mesh.is_border(h)) out = h;
+      if(std::size_t(b) >= input_vertices) to = walk(forward ? mesh.next(out) : out, forward, Mesh::null_vertex(), ignored);
+      throw Input_error(*where[k].first, where[k].second,
+                        "the curve runs along the edge from vertex " + std::to_string((std::min)(std::size_t(from), std::size_t(to))) +
+                            " to vertex " + std::to_string((std::max)(std::size_t(from), std::size_t(to))) +
+                            ", on the border of the mesh (it has one face): curves may end on the border but not run along it");
+    }
+  }
+}
+
+} // namespace internal
+
 /*!
   \brief makes the curves conform to the mesh edges and returns the cut and refined mesh with the curves'
   chain.
@@ -124,8 +181,9 @@ std::vector<int> vertex_curve_chain(const CGAL::Surface_mesh<Point>& mesh, const
          `Cut_result::point_vertex`
   \param options refinement options
   \throws Input_error (with the file and line of the offending record) on dual pairs ("dual chains (c lines)
-  are not supported yet"), an index out of range, t outside [0,1] or a segment whose points share no face (segments
-  crossing inside a face get a vertex where they cross).
+  are not supported yet"), an index out of range, t outside [0,1], a segment whose points share no face (segments
+  crossing inside a face get a vertex where they cross), or a segment along the border of the mesh where the
+  curves do not cancel (curves may end on the border, not run along it).
 */
 template <class Point>
 Cut_result<Point> conforming_cut(const CGAL::Surface_mesh<Point>& mesh, const std::vector<Curve_set>& curves,
@@ -209,6 +267,7 @@ Cut_result<Point> conforming_cut(const CGAL::Surface_mesh<Point>& mesh, const st
   result.face_origin.assign(result.mesh.number_of_faces(), 0);
   for(auto f : result.mesh.faces()) result.face_origin[std::size_t(f)] = std::size_t(origin[f]);
   result.mesh.remove_property_map(origin);
+  internal::refuse_curves_along_the_border(result.mesh, result.chain, nv, cut.curve_vertices, where);
   result.point_vertex.assign(base, std::size_t(-1));
   for(std::size_t k = 0; k < segments.size(); ++k)
     for(int end = 0; end < 2; ++end)
