@@ -16,6 +16,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -465,6 +466,60 @@ TEST(CurvesOffMesh, ThreeHundredChordsCrossingInOneFaceAreCutInOnce)
     EXPECT_EQ(boundary[r.curve_vertices[i][1]], 1);
   }
   for(FI f : m.faces()) EXPECT_GT(PMP::face_area(f, m), 0.) << "face " << f;
+}
+
+TEST(CurvesOffMesh, WalksFromAVertexAndClockwiseStampsWithCornersOnEdges)
+{
+  // issue 42, observations rechecked after the one cut (grid10: the unit square, 10 x 10 cells split along
+  // (i, j)-(i+1, j+1), as the Python tests' grid_disk(10))
+  // a walk that starts at a vertex: (0.3, 0.7) -> (0.2, 0.2), through no other vertex, and back
+  for(const Polylines& stroke : {Polylines{{Point(0.3, 0.7, 0), Point(0.2, 0.2, 0)}}, Polylines{{Point(0.2, 0.2, 0), Point(0.3, 0.7, 0)}}})
+  {
+    Mesh m = read(repro + "grid10.offmesh.obj");
+    auto chain = m.add_property_map<Mesh::Edge_index, int>("e:chain", 0).first;
+    const auto r = SWN::polylines_to_chain(m, stroke, chain, SWN::parameters::refine_short_pieces(false));
+    ASSERT_TRUE(bool(r)) << r.error;
+    EXPECT_EQ(r.failed_walks, 0u);
+    EXPECT_EQ(r.points_off_surface, 0u);
+    ASSERT_EQ(r.pieces.size(), 1u);
+    ASSERT_EQ(r.pieces[0].size(), 1u);
+    EXPECT_EQ(r.pieces[0][0], (std::vector<std::size_t>{0, 1}));
+    // the chain runs from the first point's vertex to the last one's: boundary -1 and +1 there only, and
+    // its edges add up to the segment's length (every vertex of the cut is on the segment)
+    const VI from(Mesh::size_type(stroke[0][0] == Point(0.3, 0.7, 0) ? 7 * 11 + 3 : 2 * 11 + 2));
+    const VI to(Mesh::size_type(stroke[0][0] == Point(0.3, 0.7, 0) ? 2 * 11 + 2 : 7 * 11 + 3));
+    ASSERT_EQ(m.point(from), stroke[0][0]);
+    ASSERT_EQ(m.point(to), stroke[0][1]);
+    std::map<VI, int> boundary;
+    double length = 0;
+    for(auto e : m.edges())
+    {
+      const int c = chain[e];
+      if(c == 0) continue;
+      boundary[m.target(m.halfedge(e))] += c;
+      boundary[m.source(m.halfedge(e))] -= c;
+      length += std::abs(c) * std::sqrt(CGAL::squared_distance(m.point(m.source(m.halfedge(e))), m.point(m.target(m.halfedge(e)))));
+    }
+    for(const auto& b : boundary) EXPECT_EQ(b.second, b.first == from ? -1 : (b.first == to ? 1 : 0)) << "vertex " << b.first;
+    EXPECT_NEAR(length, std::sqrt(0.26), 1e-12);
+  }
+  // a parallelogram stamped straight down, with its corners on the cells' diagonals (the point halfway
+  // along each), clockwise and counter-clockwise: closed, no zero-area face, label -1 or +1 on its area 0.16
+  const Drawing clockwise{{{0.25, 0.25}, {0.35, 0.65}, {0.75, 0.65}, {0.65, 0.25}, {0.25, 0.25}}};
+  Drawing counter = clockwise;
+  std::reverse(counter[0].begin(), counter[0].end());
+  // corners on the horizontal grid lines, one side through the vertex (0.3, 0.4)
+  const Drawing on_lines{{{0.25, 0.2}, {0.35, 0.6}, {0.75, 0.6}, {0.65, 0.2}, {0.25, 0.2}}};
+  for(const auto& [drawing, depth] : {std::make_pair(clockwise, -1), std::make_pair(counter, 1), std::make_pair(on_lines, -1)})
+  {
+    Mesh m = read(repro + "grid10.offmesh.obj");
+    const SWN::Stamp_frame<K> frame{Point(0, 0, 1), K::Vector_3(1, 0, 0), K::Vector_3(0, 1, 0), K::Vector_3(0, 0, -1)};
+    const Outcome o = polylines_outcome(m, SWN::stamp_polylines(m, drawing, frame));
+    EXPECT_EQ(o.zero_area_faces, 0) << "depth " << depth;
+    EXPECT_EQ(o.endpoints, 0) << "depth " << depth;
+    EXPECT_NEAR(o.area_of(depth), 0.16, 1e-12) << "depth " << depth;
+    EXPECT_NEAR(o.area_of(-depth), 0., 1e-12) << "depth " << depth;
+  }
 }
 
 } // namespace
