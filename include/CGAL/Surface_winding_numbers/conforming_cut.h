@@ -5,7 +5,7 @@
 #define CGAL_SURFACE_WINDING_NUMBERS_CONFORMING_CUT_H
 
 #include <CGAL/Surface_winding_numbers/chain_helpers.h>
-#include <CGAL/Surface_winding_numbers/internal/cut_faces.h>
+#include <CGAL/Surface_winding_numbers/internal/cut_curves.h>
 #include <CGAL/Surface_winding_numbers/internal/refine_short_pieces.h>
 #include <CGAL/Surface_winding_numbers/parameters.h>
 
@@ -48,7 +48,7 @@ struct Conforming_cut_result
     NO_ERROR,          ///< the cut was done
     INVALID_LOCATION,  ///< a point has no face, coordinates that are negative or not finite, or lies strictly inside its face
     NO_COMMON_FACE,    ///< the two points of a segment lie on no common face
-    CROSSING_SEGMENTS, ///< not returned: segments that cross inside a face get a vertex where they cross
+    CROSSING_SEGMENTS, ///< \deprecated not returned since segments that cross inside a face get a vertex where they cross
     INVALID_PARAMETER  ///< `minimum_piece_edges` is above `max_minimum_piece_edges` (with the refinement on)
   };
 
@@ -64,9 +64,9 @@ struct Conforming_cut_result
   std::size_t curve = 0;
   /// see `curve`
   std::size_t index = 0;
-  /// not used (see `CROSSING_SEGMENTS`)
+  /// \deprecated always 0: was the other curve of `CROSSING_SEGMENTS`, which is not returned
   std::size_t other_curve = 0;
-  /// see `other_curve`
+  /// \deprecated always 0: was the other segment of `CROSSING_SEGMENTS`, which is not returned
   std::size_t other_index = 0;
 
   /// for each curve and each of its points, the vertex of the cut mesh at that point; the null vertex for a
@@ -92,56 +92,6 @@ struct Conforming_cut_result
   /// `true` if the cut was done
   explicit operator bool() const { return error == NO_ERROR; }
 };
-
-/// \cond SKIP_IN_MANUAL
-namespace internal {
-
-// A point of the curves before the cut: a vertex, or a point on an edge given by the barycentric
-// coordinates of the edge's ends (`at_source`, `at_target` along the reference halfedge).
-template <class TriangleMesh, class FT>
-struct Cut_point
-{
-  // the vertex (an edge point: once inserted)
-  typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex = boost::graph_traits<TriangleMesh>::null_vertex();
-  std::size_t edge = std::size_t(-1);                                     // edge point: its Cut_edge
-  FT at_source = FT(0), at_target = FT(0);
-  bool used = false;                                                      // on a segment that is not skipped
-};
-
-// An edge of the input with points on it.
-template <class TriangleMesh>
-struct Cut_edge
-{
-  typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h;      // the reference halfedge
-  typename boost::graph_traits<TriangleMesh>::vertex_descriptor source, target;
-  std::vector<std::size_t> points;                                        // along h once sorted
-};
-
-// A face of the input that is cut: its corners, its sides (halfedge k from corner k to corner k+1) and
-// the segments crossing it.
-template <class TriangleMesh>
-struct Cut_face
-{
-  typename boost::graph_traits<TriangleMesh>::face_descriptor f;
-  std::array<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, 3> corner;
-  std::array<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor, 3> side;
-  std::vector<std::size_t> chords;                                        // segments, deduplicated
-  // where chords cross: for each chord, its crossings (parameter from its first point, crossing) in order;
-  // each crossing's barycentric coordinates, and its vertex once inserted
-  std::vector<std::vector<std::pair<double, std::size_t> > > crossings;
-  std::vector<std::array<double, 3> > inner;
-  std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> inner_vertex;
-};
-
-struct Cut_segment
-{
-  std::size_t a, b, curve, index;
-  std::size_t edge;   // along an edge with points on it: its Cut_edge; none along another edge, or inside a face
-  std::size_t face;   // inside a face: its Cut_face; none along an edge
-};
-
-} // namespace internal
-/// \endcond
 
 /*!
 \ingroup PkgSurfaceWindingNumbersRef
@@ -244,14 +194,10 @@ conforming_cut(TriangleMesh& tm, const CurveRange& curves, ChainMap chain,
                const NamedParameters& np = CGAL::parameters::default_values())
 {
   typedef boost::graph_traits<TriangleMesh> Traits;
-  typedef typename Traits::vertex_descriptor vertex_descriptor;
-  typedef typename Traits::halfedge_descriptor halfedge_descriptor;
   typedef typename Traits::face_descriptor face_descriptor;
   typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
   typedef typename GT::FT FT;
   typedef typename boost::property_traits<ChainMap>::value_type Chain_value;
-  typedef typename boost::property_traits<
-    typename GetVertexPointMap<TriangleMesh, NamedParameters>::type>::value_type Point;
   typedef Conforming_cut_result<TriangleMesh> Result;
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -260,8 +206,6 @@ conforming_cut(TriangleMesh& tm, const CurveRange& curves, ChainMap chain,
   auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_property_map(CGAL::vertex_point, tm));
   const bool refine = choose_parameter(get_parameter(np, snp::refine_short_pieces), true);
   const std::size_t min_edges = choose_parameter(get_parameter(np, snp::minimum_piece_edges), std::size_t(8));
-  const std::size_t none = std::size_t(-1);
-  const FT snap(internal::cut_snap_tolerance);   // relative to the face or the edge
 
   Result result;
   auto refuse = [&](typename Result::Error error, std::size_t curve, std::size_t index, const std::string& message) {
@@ -277,307 +221,35 @@ conforming_cut(TriangleMesh& tm, const CurveRange& curves, ChainMap chain,
                   "minimum_piece_edges is " + std::to_string(min_edges) + ", above the largest accepted value " +
                   std::to_string(Result::max_minimum_piece_edges));
 
-  // ---- the points, deduplicated: vertices by a vertex map, edge points per edge of the input
+  // ---- the curves' points and segments, and the faces they cut (nothing is changed so far)
   std::vector<internal::Cut_point<TriangleMesh, FT> > points;
   std::vector<internal::Cut_edge<TriangleMesh> > cut_edges;
   std::vector<std::vector<std::size_t> > curve_points;
-  const auto reference = internal::reference_halfedge_marks(tm);
-  // dynamic maps start with value-initialized values (0, false)
-  auto edge_of = get(CGAL::dynamic_edge_property_t<std::size_t>(), tm);   // Cut_edge + 1, 0: none
-  {
-    auto vertex_point = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);   // point + 1, 0: none
-    std::size_t c = 0;
-    for(const auto& curve : curves)
-    {
-      curve_points.emplace_back();
-      std::size_t j = 0;
-      for(const auto& location : curve)
-      {
-        const face_descriptor f = location.first;
-        std::array<FT, 3> w;
-        int zeros = 0;
-        bool valid = f != Traits::null_face();
-        FT sum(0);
-        for(int k = 0; k < 3; ++k)
-        {
-          w[k] = FT(location.second[k]);
-          valid = valid && CGAL::is_finite(w[k]) && !(w[k] < -snap);
-          sum += w[k];
-        }
-        valid = valid && sum > FT(0);
-        // coordinates within the snapping tolerance of 0 are 0: the point is on the border up to rounding
-        for(int k = 0; valid && k < 3; ++k)
-          if(!(w[k] > snap * sum)) { w[k] = FT(0); ++zeros; }
-        if(valid && zeros < 3)
-        {
-          sum = w[0] + w[1] + w[2];
-          for(int k = 0; k < 3; ++k) w[k] = w[k] / sum;
-        }
-        if(!valid || zeros == 0 || zeros == 3)
-          return refuse(Result::INVALID_LOCATION, c, j,
-                        !valid ? "a point has no face, or negative or non-finite coordinates"
-                               : "a point lies strictly inside a face (only vertices and points on edges are supported)");
-        // vertex k of the face is source(h[k]); coordinate k belongs to it
-        const halfedge_descriptor h0 = halfedge(f, tm);
-        const std::array<halfedge_descriptor, 3> h = {h0, next(h0, tm), next(next(h0, tm), tm)};
-        std::size_t id = points.size();
-        if(zeros == 2)
-        {
-          int k = 0;
-          while(w[k] == FT(0)) ++k;
-          const vertex_descriptor v = source(h[k], tm);
-          if(get(vertex_point, v) != 0) id = get(vertex_point, v) - 1;
-          else
-          {
-            put(vertex_point, v, id + 1);
-            points.emplace_back();
-            points.back().vertex = v;
-          }
-        }
-        else
-        {
-          int k = 0;
-          while(w[k] != FT(0)) ++k;
-          halfedge_descriptor e = h[(k + 1) % 3];   // the side opposite to vertex k
-          FT at_source = w[(k + 1) % 3], at_target = w[(k + 2) % 3];
-          if(!get(reference, e)) { e = opposite(e, tm); std::swap(at_source, at_target); }
-          if(get(edge_of, edge(e, tm)) == 0)
-          {
-            cut_edges.push_back({e, source(e, tm), target(e, tm), {}});
-            put(edge_of, edge(e, tm), cut_edges.size());
-          }
-          auto& ce = cut_edges[get(edge_of, edge(e, tm)) - 1];
-          for(std::size_t p : ce.points)   // one point for points on an edge closer than the tolerance
-            if(CGAL::abs(points[p].at_target - at_target) <= snap) id = p;
-          if(id == points.size())
-          {
-            points.emplace_back();
-            points.back().edge = get(edge_of, edge(e, tm)) - 1;
-            points.back().at_source = at_source;
-            points.back().at_target = at_target;
-            ce.points.push_back(id);
-          }
-        }
-        curve_points.back().push_back(id);
-        ++j;
-      }
-      ++c;
-    }
-    for(auto& ce : cut_edges)
-      std::sort(ce.points.begin(), ce.points.end(), [&](std::size_t p, std::size_t q) {
-        return points[p].at_target < points[q].at_target ||
-               (points[p].at_target == points[q].at_target && points[q].at_source < points[p].at_source);
-      });
-  }
-
-  // ---- the segments: along an edge, or inside a face (chords)
   std::vector<internal::Cut_segment> segments;
   std::vector<internal::Cut_face<TriangleMesh> > cut_faces;
+  // dynamic maps start with value-initialized values (0, false)
+  auto edge_of = get(CGAL::dynamic_edge_property_t<std::size_t>(), tm);   // Cut_edge + 1, 0: none
   auto face_of = get(CGAL::dynamic_face_property_t<std::size_t>(), tm);   // Cut_face + 1, 0: none
-  auto cut_face = [&](face_descriptor f) {
-    if(get(face_of, f) == 0)
-    {
-      const halfedge_descriptor h0 = halfedge(f, tm);
-      internal::Cut_face<TriangleMesh> cf;
-      cf.f = f;
-      cf.side = {h0, next(h0, tm), next(next(h0, tm), tm)};
-      for(int k = 0; k < 3; ++k) cf.corner[k] = source(cf.side[k], tm);
-      cut_faces.push_back(cf);
-      put(face_of, f, cut_faces.size());
-    }
-    return get(face_of, f) - 1;
-  };
-  auto faces_of_edge = [&](const internal::Cut_edge<TriangleMesh>& ce) {
-    std::vector<face_descriptor> r;
-    for(halfedge_descriptor g : {ce.h, opposite(ce.h, tm)})
-      if(!is_border(g, tm)) r.push_back(face(g, tm));
-    return r;
-  };
-  for(std::size_t c = 0; c < curve_points.size(); ++c)
-    for(std::size_t j = 0; j + 1 < curve_points[c].size(); ++j)
-    {
-      const std::size_t a = curve_points[c][j], b = curve_points[c][j + 1];
-      if(a == b) { ++result.skipped_segments; continue; }
-      internal::Cut_segment s{a, b, c, j, none, none};
-      const auto &pa = points[a], &pb = points[b];
-      bool found = false;
-      if(pa.edge == none && pb.edge == none)   // two vertices: along their edge
-      {
-        const auto h = halfedge(pa.vertex, pb.vertex, tm);
-        found = h.second;
-        if(found && get(edge_of, edge(h.first, tm)) != 0) s.edge = get(edge_of, edge(h.first, tm)) - 1;
-      }
-      else if(pa.edge == pb.edge)   // two points on one edge
-      {
-        s.edge = pa.edge;
-        found = true;
-      }
-      else if(pa.edge != none && pb.edge != none)   // points on two edges: inside their common face
-      {
-        for(face_descriptor f : faces_of_edge(cut_edges[pa.edge]))
-          for(face_descriptor g : faces_of_edge(cut_edges[pb.edge]))
-            if(f == g && !found) { s.face = cut_face(f); found = true; }
-      }
-      else   // a vertex and a point on an edge: along the edge if the vertex ends it, else inside a face
-      {
-        const std::size_t e = pa.edge != none ? pa.edge : pb.edge;
-        const vertex_descriptor v = pa.edge != none ? pb.vertex : pa.vertex;
-        const auto& ce = cut_edges[e];
-        if(v == ce.source || v == ce.target) { s.edge = e; found = true; }
-        else
-          for(halfedge_descriptor g : {ce.h, opposite(ce.h, tm)})
-            if(!is_border(g, tm) && target(next(g, tm), tm) == v && !found) { s.face = cut_face(face(g, tm)); found = true; }
-      }
-      if(!found)
-        return refuse(Result::NO_COMMON_FACE, c, j, "the segment does not lie in a single face (its two points share no face)");
-      points[a].used = points[b].used = true;
-      segments.push_back(s);
-    }
+  internal::Cut_refusal why;
+  if(!internal::locate_cut_points<FT>(tm, curves, edge_of, points, cut_edges, curve_points, why))
+    return refuse(Result::INVALID_LOCATION, why.curve, why.index, why.message);
+  if(!internal::sort_cut_segments<FT>(tm, edge_of, face_of, points, cut_edges, curve_points, segments, cut_faces,
+                                      result.skipped_segments, why))
+    return refuse(Result::NO_COMMON_FACE, why.curve, why.index, why.message);
+  const std::vector<std::size_t> chord_of = internal::cross_chords(tm, points, cut_edges, segments, cut_faces);
+  for(const auto& cf : cut_faces) result.crossing_vertices += cf.inner.size();
+  internal::add_faces_of_used_edges(tm, points, cut_edges, face_of, cut_faces);
 
-  // ---- chords of every face, deduplicated; where two of them cross, a vertex inside the face
-  // position of a point on the border of a cut face: (side, coordinate of the side's end)
-  auto position = [&](const internal::Cut_face<TriangleMesh>& cf, std::size_t p) {
-    for(int k = 0; k < 3; ++k)
-    {
-      if(points[p].edge == none)
-      {
-        if(points[p].vertex == cf.corner[k]) return std::make_pair(k, FT(0));
-        continue;
-      }
-      const halfedge_descriptor h = cut_edges[points[p].edge].h;
-      if(cf.side[k] == h) return std::make_pair(k, points[p].at_target);
-      if(cf.side[k] == opposite(h, tm)) return std::make_pair(k, points[p].at_source);
-    }
-    return std::make_pair(3, FT(0));   // cannot happen: the point is on the face
-  };
-  std::vector<std::size_t> chord_of(segments.size(), none);   // the chord a segment inside a face runs along
-  for(std::size_t s = 0; s < segments.size(); ++s)
-  {
-    if(segments[s].face == none) continue;
-    auto& cf = cut_faces[segments[s].face];
-    for(std::size_t t : cf.chords)
-    {
-      const std::size_t a = segments[t].a, b = segments[t].b;
-      if((a == segments[s].a && b == segments[s].b) || (a == segments[s].b && b == segments[s].a)) chord_of[s] = t;
-    }
-    if(chord_of[s] == none)
-    {
-      chord_of[s] = s;
-      cf.chords.push_back(s);
-    }
-  }
-  for(auto& cf : cut_faces)
-  {
-    const std::size_t n = cf.chords.size();
-    std::vector<std::pair<std::pair<int, FT>, std::pair<int, FT> > > range(n);
-    std::vector<std::array<double, 3> > from(n), to(n);
-    for(std::size_t i = 0; i < n; ++i)
-    {
-      const internal::Cut_segment& sg = segments[cf.chords[i]];
-      range[i] = std::make_pair(position(cf, sg.a), position(cf, sg.b));
-      for(int end = 0; end < 2; ++end)
-      {
-        const auto pos = end == 0 ? range[i].first : range[i].second;
-        std::array<double, 3>& bary = end == 0 ? from[i] : to[i];
-        bary = {0., 0., 0.};
-        bary[pos.first] = 1 - CGAL::to_double(pos.second);
-        bary[(pos.first + 1) % 3] = CGAL::to_double(pos.second);
-      }
-      if(range[i].second < range[i].first) std::swap(range[i].first, range[i].second);
-    }
-    internal::chord_crossings(range, from, to, cf.crossings, cf.inner);
-    result.crossing_vertices += cf.inner.size();
-  }
-  for(const auto& ce : cut_edges)
-  {
-    bool used = false;
-    for(std::size_t p : ce.points) used = used || points[p].used;
-    if(used)
-      for(face_descriptor f : faces_of_edge(ce)) cut_face(f);
-  }
-
-  // ---- the cut (nothing was changed so far). The chain is kept as a flow on the halfedges.
+  // ---- the cut. The chain is kept as a flow on the halfedges.
   const std::size_t nv = num_vertices(tm), nf = num_faces(tm);
   auto flow = get(CGAL::dynamic_halfedge_property_t<Chain_value>(), tm);
   auto origin = get(CGAL::dynamic_face_property_t<face_descriptor>(), tm);   // the input face of every piece
   for(face_descriptor f : faces(tm)) put(origin, f, f);
   for(auto e : edges(tm))
     if(get(chain, e) != Chain_value(0)) put(flow, halfedge(e, tm), get(chain, e));
-  for(std::size_t p = 0; p < points.size(); ++p)
-  {
-    auto& point = points[p];
-    if(point.edge == none || !point.used) continue;
-    // the sub-edge between the nearest points already inserted on both sides
-    const auto& ce = cut_edges[point.edge];
-    vertex_descriptor before = ce.source, after = ce.target;
-    const auto at = std::find(ce.points.begin(), ce.points.end(), p);
-    for(auto q = ce.points.begin(); q != at; ++q)
-      if(points[*q].vertex != Traits::null_vertex()) before = points[*q].vertex;
-    for(auto q = ce.points.end(); q != at + 1;)
-      if(points[*--q].vertex != Traits::null_vertex()) after = points[*q].vertex;
-    const halfedge_descriptor h = halfedge(before, after, tm).first;
-    const halfedge_descriptor hnew = CGAL::Euler::split_edge(h, tm);   // hnew: before -> new, h: new -> after
-    point.vertex = target(hnew, tm);
-    const Point &ps = get(vpm, ce.source), &pt = get(vpm, ce.target);
-    put(vpm, point.vertex, Point(point.at_source * ps.x() + point.at_target * pt.x(),
-                                 point.at_source * ps.y() + point.at_target * pt.y(),
-                                 point.at_source * ps.z() + point.at_target * pt.z()));
-    put(flow, hnew, get(flow, h));
-    put(flow, opposite(hnew, tm), get(flow, opposite(h, tm)));
-  }
-  if(!cut_faces.empty())
-  {
-    auto line = get(CGAL::dynamic_halfedge_property_t<int>(), tm);
-    int next_line = 3;
-    std::vector<internal::Face_chord<vertex_descriptor> > chords;
-    for(face_descriptor f : faces(tm))   // in the order of faces(tm), for the numbering of the new faces
-    {
-      if(get(face_of, f) == 0) continue;
-      auto& cf = cut_faces[get(face_of, f) - 1];
-      chords.clear();
-      for(std::size_t i = 0; i < cf.chords.size(); ++i)
-      {
-        chords.push_back({points[segments[cf.chords[i]].a].vertex, points[segments[cf.chords[i]].b].vertex, {}});
-        for(const auto& c : cf.crossings[i]) chords.back().inner.push_back(c.second);
-      }
-      // f keeps the piece with target(halfedge(f)), the first vertex of f for meshes read from files
-      internal::cut_and_triangulate_face(tm, vpm, f, cf.corner, chords, cf.inner, cf.inner_vertex, cf.corner[1],
-                                         line, next_line, origin);
-    }
-  }
-  // the curves on the edges
-  for(const auto& s : segments)
-  {
-    const vertex_descriptor va = points[s.a].vertex, vb = points[s.b].vertex;
-    std::vector<vertex_descriptor> path{va, vb};
-    if(s.face != none)   // its chord, through the crossings
-    {
-      const auto& cf = cut_faces[s.face];
-      const std::size_t c = chord_of[&s - segments.data()];
-      const std::size_t i = std::size_t(std::find(cf.chords.begin(), cf.chords.end(), c) - cf.chords.begin());
-      path.assign(1, points[segments[c].a].vertex);
-      for(const auto& x : cf.crossings[i]) path.push_back(cf.inner_vertex[x.second]);
-      path.push_back(points[segments[c].b].vertex);
-      if(path.front() != va) std::reverse(path.begin(), path.end());
-    }
-    else if(s.edge != none)
-    {
-      const auto& ce = cut_edges[s.edge];
-      std::vector<vertex_descriptor> along{ce.source};
-      for(std::size_t p : ce.points)
-        if(points[p].used) along.push_back(points[p].vertex);
-      along.push_back(ce.target);
-      auto ia = std::find(along.begin(), along.end(), va), ib = std::find(along.begin(), along.end(), vb);
-      if(ib < ia) path.assign(std::make_reverse_iterator(ia + 1), std::make_reverse_iterator(ib));
-      else path.assign(ia, ib + 1);
-    }
-    for(std::size_t k = 0; k + 1 < path.size(); ++k)
-    {
-      const auto h = halfedge(path[k], path[k + 1], tm);
-      CGAL_assertion(h.second);
-      put(flow, h.first, get(flow, h.first) + Chain_value(1));
-    }
-  }
+  internal::insert_edge_points(tm, vpm, points, cut_edges, flow);
+  internal::cut_every_face(tm, vpm, face_of, cut_faces, points, segments, origin);
+  internal::add_segments_to_flow(tm, points, cut_edges, segments, cut_faces, chord_of, flow);
   result.segments = segments.size();
   result.cut_vertices = num_vertices(tm) - nv;
   result.cut_faces = num_faces(tm) - nf;

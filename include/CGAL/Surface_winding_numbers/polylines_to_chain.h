@@ -48,8 +48,8 @@ struct Polylines_to_chain_result
   /// segments between two points near the surface that the walk could not follow (border reached, or the
   /// plane section turning away): each one makes a gap
   std::size_t failed_walks = 0;
-  /// pieces of curve dropped because they crossed another piece: always 0, crossings get a vertex of the
-  /// cut (`Conforming_cut_result::crossing_vertices`)
+  /// \deprecated always 0: pieces of curve that cross get a vertex of the cut where they cross
+  /// (`Conforming_cut_result::crossing_vertices`)
   std::size_t dropped_crossings = 0;
   /// curves (maximal unbroken pieces) put on the mesh
   std::size_t curves = 0;

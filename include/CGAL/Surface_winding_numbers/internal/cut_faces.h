@@ -1,12 +1,14 @@
 // Copyright (c) 2026 The CGAL Surface Winding Numbers project.
 // SPDX-License-Identifier: MIT
 //
-// Step of conforming_cut(): a face of the input whose sides received new vertices is split along the
-// curve segments that cross it (chords), and every piece is triangulated without degenerate triangles.
+// Steps of conforming_cut() on the faces: the curves' points, edges, faces and segments of the cut; the
+// chords of every face and where they cross; a face of the input whose sides received new vertices split
+// along its chords, and every piece triangulated without degenerate triangles.
 
 #ifndef CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_CUT_FACES_H
 #define CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_CUT_FACES_H
 
+#include <CGAL/Dynamic_property_map.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/number_utils.h>
@@ -28,6 +30,51 @@ namespace internal {
 // Barycentric coordinates closer than this to 0 are 0, points on an edge closer than this (relative to its
 // length) are one point, and so are crossings on a chord.
 constexpr double cut_snap_tolerance = 1e-9;
+
+// A point of the curves before the cut: a vertex, or a point on an edge given by the barycentric
+// coordinates of the edge's ends (`at_source`, `at_target` along the reference halfedge).
+template <class TriangleMesh, class FT>
+struct Cut_point
+{
+  // the vertex (an edge point: once inserted)
+  typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex = boost::graph_traits<TriangleMesh>::null_vertex();
+  std::size_t edge = std::size_t(-1);                                     // edge point: its Cut_edge
+  FT at_source = FT(0), at_target = FT(0);
+  bool used = false;                                                      // on a segment that is not skipped
+};
+
+// An edge of the input with points on it.
+template <class TriangleMesh>
+struct Cut_edge
+{
+  typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h;      // the reference halfedge
+  typename boost::graph_traits<TriangleMesh>::vertex_descriptor source, target;
+  std::vector<std::size_t> points;                                        // along h once sorted
+};
+
+// A face of the input that is cut: its corners, its sides (halfedge k from corner k to corner k+1) and
+// the segments crossing it.
+template <class TriangleMesh>
+struct Cut_face
+{
+  typename boost::graph_traits<TriangleMesh>::face_descriptor f;
+  std::array<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, 3> corner;
+  std::array<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor, 3> side;
+  std::vector<std::size_t> chords;                                        // segments, deduplicated
+  // where chords cross: for each chord, its crossings (parameter from its first point, crossing) in order;
+  // each crossing's barycentric coordinates, and its vertex once inserted
+  std::vector<std::vector<std::pair<double, std::size_t> > > crossings;
+  std::vector<std::array<double, 3> > inner;
+  std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> inner_vertex;
+};
+
+// A segment between two consecutive points of a curve.
+struct Cut_segment
+{
+  std::size_t a, b, curve, index;
+  std::size_t edge;   // along an edge with points on it: its Cut_edge; none along another edge, or inside a face
+  std::size_t face;   // inside a face: its Cut_face; none along an edge
+};
 
 // A chord of a face: from vertex a to vertex b on its border, through the crossings `inner` (indices of
 // crossings of the face) in order.
@@ -96,6 +143,70 @@ void chord_crossings(const std::vector<std::pair<Position, Position> >& range, c
       }
     }
   for(auto& c : crossings) std::sort(c.begin(), c.end());
+}
+
+// The chords of every face to cut (its segments, deduplicated: `Cut_face::chords`) and where they cross
+// (`Cut_face::crossings` and `inner`, by chord_crossings() on the chords' ends around the face). Returns, for
+// every segment inside a face, the chord it runs along (the first segment with its two points).
+template <class TriangleMesh, class FT>
+std::vector<std::size_t> cross_chords(const TriangleMesh& tm, const std::vector<Cut_point<TriangleMesh, FT> >& points,
+                                      const std::vector<Cut_edge<TriangleMesh> >& cut_edges,
+                                      const std::vector<Cut_segment>& segments, std::vector<Cut_face<TriangleMesh> >& cut_faces)
+{
+  const std::size_t none = std::size_t(-1);
+  // position of a point on the border of a cut face: (side, coordinate of the side's end)
+  auto position = [&](const Cut_face<TriangleMesh>& cf, std::size_t p) {
+    for(int k = 0; k < 3; ++k)
+    {
+      if(points[p].edge == none)
+      {
+        if(points[p].vertex == cf.corner[k]) return std::make_pair(k, FT(0));
+        continue;
+      }
+      const auto h = cut_edges[points[p].edge].h;
+      if(cf.side[k] == h) return std::make_pair(k, points[p].at_target);
+      if(cf.side[k] == opposite(h, tm)) return std::make_pair(k, points[p].at_source);
+    }
+    return std::make_pair(3, FT(0));   // cannot happen: the point is on the face
+  };
+  std::vector<std::size_t> chord_of(segments.size(), none);   // the chord a segment inside a face runs along
+  for(std::size_t s = 0; s < segments.size(); ++s)
+  {
+    if(segments[s].face == none) continue;
+    auto& cf = cut_faces[segments[s].face];
+    for(std::size_t t : cf.chords)
+    {
+      const std::size_t a = segments[t].a, b = segments[t].b;
+      if((a == segments[s].a && b == segments[s].b) || (a == segments[s].b && b == segments[s].a)) chord_of[s] = t;
+    }
+    if(chord_of[s] == none)
+    {
+      chord_of[s] = s;
+      cf.chords.push_back(s);
+    }
+  }
+  for(auto& cf : cut_faces)
+  {
+    const std::size_t n = cf.chords.size();
+    std::vector<std::pair<std::pair<int, FT>, std::pair<int, FT> > > range(n);
+    std::vector<std::array<double, 3> > from(n), to(n);
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const Cut_segment& sg = segments[cf.chords[i]];
+      range[i] = std::make_pair(position(cf, sg.a), position(cf, sg.b));
+      for(int end = 0; end < 2; ++end)
+      {
+        const auto pos = end == 0 ? range[i].first : range[i].second;
+        std::array<double, 3>& bary = end == 0 ? from[i] : to[i];
+        bary = {0., 0., 0.};
+        bary[pos.first] = 1 - CGAL::to_double(pos.second);
+        bary[(pos.first + 1) % 3] = CGAL::to_double(pos.second);
+      }
+      if(range[i].second < range[i].first) std::swap(range[i].first, range[i].second);
+    }
+    chord_crossings(range, from, to, cf.crossings, cf.inner);
+  }
+  return chord_of;
 }
 
 // angle at a of the triangle abc (the sides divided by their largest coordinate: no underflow or
@@ -289,6 +400,33 @@ void cut_and_triangulate_face(
 
   for(halfedge_descriptor g : CGAL::halfedges_around_face(halfedge(f, tm), tm))
     if(target(g, tm) == keep) { set_halfedge(f, g, tm); break; }
+}
+
+// Cuts every face to cut (`face_of`: face -> Cut_face + 1) along its chords, in the order of faces(tm), for
+// the numbering of the new faces; each keeps the piece with target(halfedge(f)), the first vertex of f for
+// meshes read from files.
+template <class TriangleMesh, class VertexPointMap, class FT, class FaceOfMap, class OriginMap>
+void cut_every_face(TriangleMesh& tm, VertexPointMap vpm, FaceOfMap face_of, std::vector<Cut_face<TriangleMesh> >& cut_faces,
+                    const std::vector<Cut_point<TriangleMesh, FT> >& points, const std::vector<Cut_segment>& segments,
+                    OriginMap origin)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  if(cut_faces.empty()) return;
+  auto line = get(CGAL::dynamic_halfedge_property_t<int>(), tm);
+  int next_line = 3;
+  std::vector<Face_chord<vertex_descriptor> > chords;
+  for(auto f : faces(tm))
+  {
+    if(get(face_of, f) == 0) continue;
+    auto& cf = cut_faces[get(face_of, f) - 1];
+    chords.clear();
+    for(std::size_t i = 0; i < cf.chords.size(); ++i)
+    {
+      chords.push_back({points[segments[cf.chords[i]].a].vertex, points[segments[cf.chords[i]].b].vertex, {}});
+      for(const auto& c : cf.crossings[i]) chords.back().inner.push_back(c.second);
+    }
+    cut_and_triangulate_face(tm, vpm, f, cf.corner, chords, cf.inner, cf.inner_vertex, cf.corner[1], line, next_line, origin);
+  }
 }
 
 } // namespace internal
