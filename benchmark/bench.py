@@ -50,6 +50,8 @@ def run(cmd, **kw):
 def solve_case(args, case_id, case_dir, check_api):
     meta = json.load(open(os.path.join(case_dir, "meta.json")))
     cmd = [os.path.join(args.build, "swn_bench_solve"), case_dir, meta["mesh_file"], "--lp", args.lp, "--epsilon", str(args.epsilon)]
+    if args.completed_class:
+        cmd.append("--completed-class")
     if check_api:
         cmd.append("--check-api")
     row = dict(meta)
@@ -377,6 +379,7 @@ def main():
     ap.add_argument("--timeout", type=float, default=1200)
     ap.add_argument("--lp", default="default")
     ap.add_argument("--epsilon", type=float, default=0.01, help="epsilon of Eq. 11 (the library's default is 0.01)")
+    ap.add_argument("--completed-class", action="store_true", help="the named parameter completed_homology_class(true)")
     ap.add_argument("--cgal-data", default="")
     ap.add_argument("--mesh-cache", default="")
     ap.add_argument("--command", default="")
@@ -453,7 +456,7 @@ def main():
         rows = list(ex.map(one, enumerate(cases)))
     write_csv(os.path.join(out, "cases.csv"), rows)
     extra = {"suite": args.suite, "shard": args.shard, "jobs": args.jobs, "timeout_seconds": args.timeout,
-             "lp_option": args.lp, "epsilon": args.epsilon, "gap_mode": args.gaps, "gap_levels_option": args.gap_levels, "only": args.only,
+             "lp_option": args.lp, "epsilon": args.epsilon, "completed_class": args.completed_class, "gap_mode": args.gaps, "gap_levels_option": args.gap_levels, "only": args.only,
              "regions_option": args.regions, "loops_off_regions_option": args.loops_off_regions, "straighten": args.straighten, "command": args.command or " ".join(sys.argv), "git_commit": git_commit(root),
              "generation_seconds": t_gen, "wall_time_seconds": time.time() - t0}
     s = summarize(rows, out, extra)

@@ -1,6 +1,7 @@
 // swn_bench_solve: solves one benchmark case in process and prints one JSON line of metrics.
 //
 //   swn_bench_solve CASE_DIR MESH_FILE [--check-api] [--lp default|glpk|reduced] [--epsilon X]
+//                   [--completed-class]
 //
 // Reads the mesh and CASE_DIR/curve.txt with the package's readers (IO::read_mesh, IO::read_curve_file,
 // IO::vertex_curve_chain), runs the public API (Surface_winding_numbers_solver::solve with the default
@@ -166,19 +167,21 @@ int main(int argc, char** argv)
 {
   if(argc < 3)
   {
-    std::cerr << "usage: swn_bench_solve CASE_DIR MESH_FILE [--check-api] [--lp default|glpk|reduced] [--epsilon X]\n";
+    std::cerr << "usage: swn_bench_solve CASE_DIR MESH_FILE [--check-api] [--lp default|glpk|reduced] [--epsilon X] [--completed-class]\n";
     return 2;
   }
   const std::string dir = argv[1], mesh_file = argv[2];
   bool check_api = false;
   std::string lp_name = "default";
   double epsilon = 0.01;
+  bool completed_class = false;   // the named parameter completed_homology_class
   for(int i = 3; i < argc; ++i)
   {
     const std::string a = argv[i];
     if(a == "--check-api") check_api = true;
     else if(a == "--lp" && i + 1 < argc) lp_name = argv[++i];
     else if(a == "--epsilon" && i + 1 < argc) epsilon = std::stod(argv[++i]);
+    else if(a == "--completed-class") completed_class = true;
     else { std::cerr << "swn_bench_solve: unknown argument " << a << "\n"; return 2; }
   }
 
@@ -209,7 +212,7 @@ int main(int argc, char** argv)
     bool ok = false;
     std::string lp_backend = SI::Default_linear_program_traits::name();
     if(lp_name == "default")
-      ok = solver.solve(chain, labels, SWN::parameters::nonbounding_chain_map(G, SWN::parameters::report(std::ref(rep), SWN::parameters::epsilon(epsilon))));
+      ok = solver.solve(chain, labels, SWN::parameters::nonbounding_chain_map(G, SWN::parameters::report(std::ref(rep), SWN::parameters::completed_homology_class(completed_class, SWN::parameters::epsilon(epsilon)))));
 #ifdef CGAL_USE_GLPK
     else if(lp_name == "glpk")
     {
@@ -373,7 +376,7 @@ int main(int argc, char** argv)
         auto W3 = mesh.add_property_map<Mesh::Face_index, int>("f:W_hint", 0).first;
         for(auto e : mesh.edges())
           chain2[e] = in_run[solver.edge_index(e)] ? int(full[solver.edge_index(e)]) : chain[e];
-        if(solver.solve(chain2, W3, SWN::parameters::epsilon(epsilon)))
+        if(solver.solve(chain2, W3, SWN::parameters::completed_homology_class(completed_class, SWN::parameters::epsilon(epsilon))))
         {
           std::vector<int> Wh(m.nf);
           for(auto f : mesh.faces()) Wh[solver.face_index(f)] = W3[f];
@@ -385,7 +388,7 @@ int main(int argc, char** argv)
 
     out << "{\"ok\": " << (ok ? "true" : "false");
     if(!ok) out << ", \"error\": \"" << rep.error << "\"";
-    out << ", \"lp_backend\": \"" << lp_backend << "\", \"epsilon\": " << epsilon;
+    out << ", \"lp_backend\": \"" << lp_backend << "\", \"epsilon\": " << epsilon << ", \"completed_homology_class\": " << (completed_class ? "true" : "false");
 #ifdef CGAL_SWN_USE_CHOLMOD
     out << ", \"sparse_solver\": \"cholmod\"";
 #else

@@ -1,6 +1,8 @@
 // test_core: the residual problem and its linear program (Residual, LinearProgramTraits).
 #include "test_core_support.h"
 
+#include <set>
+
 // =============================================================================================
 // Residual (residual.h): local integration, the residual problem, its linear program, the residual function
 // =============================================================================================
@@ -417,3 +419,87 @@ TEST(LinearProgramTraits, StatusAndDuplicates)
 }
 #endif // CGAL_USE_GLPK
 
+
+// =============================================================================================
+// BeyondEq11 (named parameter completed_homology_class; issue 46)
+// =============================================================================================
+
+namespace {
+// torus_mesh(24, 12) with a meridian at i = 12 drawn from j = 0 to j = `drawn` only, and the outputs
+struct Half_meridian
+{
+  static constexpr int nu = 24, nv = 12, i0 = 12;
+  Mesh m;
+  Mesh::Property_map<Mesh::Edge_index, int> chain, G;
+  Mesh::Property_map<Mesh::Face_index, int> W;
+  explicit Half_meridian(int drawn)
+  {
+    const auto vs = torus_mesh(m, nu, nv);
+    chain = m.add_property_map<Mesh::Edge_index, int>("e:chain", 0).first;
+    G = m.add_property_map<Mesh::Edge_index, int>("e:G", 0).first;
+    W = m.add_property_map<Mesh::Face_index, int>("f:W", 0).first;
+    EXPECT_TRUE(SWN::add_vertex_polyline_to_chain(m, meridian_piece(vs, nv, i0, 0, drawn), chain));
+  }
+  template <class NP>
+  bool solve(const NP& np)
+  {
+    return CGAL::surface_winding_numbers(m, chain, W, SWN::parameters::nonbounding_chain_map(G, np));
+  }
+  // edges of G that run up the meridian i0 (+1 from j to j + 1), and the others
+  std::pair<int, int> G_up_the_meridian() const
+  {
+    int up = 0, other = 0;
+    for(auto e : edges(m))
+    {
+      if(G[e] == 0) continue;
+      const auto h = halfedge(e, m);
+      const std::size_t a = std::size_t(source(h, m)), b = std::size_t(target(h, m));
+      const bool on = a / nv == std::size_t(i0) && b / nv == std::size_t(i0);
+      const int dir = int((b % nv + nv - a % nv) % nv == 1) - int((a % nv + nv - b % nv) % nv == 1);   // +1: h goes up
+      (on && G[e] * dir == 1 ? up : other) += 1;
+    }
+    return {up, other};
+  }
+  std::size_t distinct_labels() const
+  {
+    std::set<int> l;
+    for(auto f : faces(m)) l.insert(W[f]);
+    return l.size();
+  }
+};
+} // namespace
+
+TEST(BeyondEq11, CompletedHomologyClassKeepsAMeridianWithAHalfGap)
+{
+  // Half of a meridian drawn (6 of its 12 edges). Analytic answer: G = the meridian closed along its
+  // gap (12 edges, upwards), one label everywhere. The harmonic part of the broken curve has a period
+  // below 1/2 around the tube, so Eq. 11 (the default) puts jumps below 1/2 on it: G rounds to nothing
+  // (the labels stay constant here, the residual jump of w across the half meridian rounding away).
+  Half_meridian c(6);
+  SWN::Solve_report rep;
+  ASSERT_TRUE(c.solve(SWN::parameters::report(std::ref(rep))));
+  EXPECT_EQ(rep.interior_endpoints, 2u);
+  EXPECT_EQ(c.G_up_the_meridian(), std::make_pair(0, 0));
+  EXPECT_EQ(c.distinct_labels(), 1u);
+  ASSERT_TRUE(c.solve(SWN::parameters::completed_homology_class(true)));
+  EXPECT_EQ(c.G_up_the_meridian(), std::make_pair(int(c.nv), 0));
+  EXPECT_EQ(c.distinct_labels(), 1u);
+}
+
+TEST(BeyondEq11, CompletedHomologyClassChangesNothingWithoutGaps)
+{
+  // a closed meridian and a closed contractible loop: no interior endpoint, so the same labels and G
+  Mesh m;
+  const auto vs = torus_mesh(m, 24, 12);
+  auto chain = m.add_property_map<Mesh::Edge_index, int>("e:chain", 0).first;
+  for(const auto& p : {meridian_piece(vs, 12, 3, 0, 12), rect_loop(torus_vertex(vs, 12), 10, 2, 15, 6)})
+    ASSERT_TRUE(SWN::add_vertex_polyline_to_chain(m, p, chain));
+  Solver solver(m);
+  Labels_and_G paper, completed;
+  ASSERT_TRUE(paper.solve(solver, chain));
+  ASSERT_TRUE(completed.solve(solver, chain, SWN::parameters::completed_homology_class(true)));
+  paper.expect_equal(completed);
+  int inside = 0;
+  for(const auto& fl : paper.labels) inside += fl.second != paper.labels.begin()->second;
+  EXPECT_EQ(inside, 2 * 5 * 4);
+}

@@ -128,6 +128,11 @@ connected component, the label covering the largest area is 0, unless the named 
     \cgalParamType{Boolean}
     \cgalParamDefault{`false`}
   \cgalParamNEnd
+  \cgalParamNBegin{Surface_winding_numbers::parameters::completed_homology_class}
+    \cgalParamDescription{`true`: for a curve with interior endpoints, the residual problem (Eq. 11) integrates the Darboux derivative of the jump-harmonic function of the curve with its gaps closed by shortest paths (as in `use_reduced_residual`), a closed 1-form with the integer periods of the completed curve, instead of the harmonic part of the broken curve's; the nonbounding loops G are then in the homology class of the completed curve. Costs and bounds of Eq. 11, the labels' second solve and everything else are unchanged; curves without interior endpoints and disks and spheres are not affected. Not the paper's method (\ref SWNBeyondEq11)}
+    \cgalParamType{Boolean}
+    \cgalParamDefault{`false` (the paper's Eq. 11 on the harmonic part)}
+  \cgalParamNEnd
   \cgalParamNBegin{Surface_winding_numbers::parameters::filter_nonbounding_loops}
     \cgalParamDescription{`false`: the labels are the rounded jump-harmonic function u (with the shift of the paper's Sec. 3.5.1), without the filtering of the nonbounding part of the curves (the paper's Fig. 27): a loop around a handle then splits the surface along itself and along a contour of u that is not in the input; G and g are zero, and the solve is one jump-Laplace solve on any surface}
     \cgalParamType{Boolean}

@@ -76,6 +76,9 @@ static const char* usage =
   "                         glpk (simplex)\n"
   "  --reduced-residual     approximate the residual LP by the paper's reduced problem (Sec. 6): gaps\n"
   "                         closed by shortest paths, one shift per region (faster, approximate)\n"
+"  --completed-class      for broken curves, Eq. 11 integrates the 1-form of the curve with its gaps\n"
+"                         closed by shortest paths, not the broken curve's harmonic part (not the\n"
+"                         paper's method; benchmark/RESULTS.md, \"Beyond Eq. 11\")\n"
   "  --no-nonbounding-filter  label by rounding the jump-harmonic function u itself (paper Fig. 27): loops\n"
   "                         around handles are completed by contours of u instead of being filtered out\n"
   "  --anchor-face N        face N of the mesh file (1-based, the file's face order: line N of a per-face\n"
@@ -126,6 +129,7 @@ struct Options
   std::string linear_solver = SIO::linear_solver_names().front();
   double epsilon = 0.01;
   bool quiet = false, verbose = false, help = false, reduced_residual = false, sequential = false;
+  bool completed_class = false;
   bool unfiltered = false;   // --no-nonbounding-filter
   std::size_t anchor_face = 0;   // --anchor-face: 1-based face of the mesh file, 0: none
   bool labels_per_input_face = false;   // --labels-per-input-face
@@ -168,6 +172,7 @@ Options parse_arguments(int argc, char** argv)
     else if(a == "--quiet") o.quiet = true;
     else if(a == "--verbose") o.verbose = true;
     else if(a == "--reduced-residual") o.reduced_residual = true;
+    else if(a == "--completed-class") o.completed_class = true;
     else if(a == "--no-nonbounding-filter") o.unfiltered = true;
     else if(a == "--sequential") o.sequential = true;
     else if(a == "--labels-per-input-face") o.labels_per_input_face = true;
@@ -444,9 +449,10 @@ int main(int argc, char** argv)
       SWN::parameters::nonbounding_chain_real_map(g, SWN::parameters::bounding_chain_map(B,
       SWN::parameters::epsilon(opt.epsilon, SWN::parameters::use_reduced_residual(opt.reduced_residual,
       SWN::parameters::filter_nonbounding_loops(!opt.unfiltered,
+      SWN::parameters::completed_homology_class(opt.completed_class,
       SWN::parameters::concurrency(!opt.sequential,
       SWN::parameters::lp_solver(std::ref(lp),
-      SWN::parameters::report(std::ref(report)))))))))))))))
+      SWN::parameters::report(std::ref(report))))))))))))))))
         .verbose(opt.verbose).sparse_linear_solver(sparse_solver));
   });
   if(!ok)

@@ -49,10 +49,11 @@ int run_on_soup(const Options& opt, const SIO::Triangle_soup& soup, const SIO::M
         SWN::parameters::bounding_chain_map(boost::make_assoc_property_map(B),
         SWN::parameters::epsilon(opt.epsilon, SWN::parameters::use_reduced_residual(opt.reduced_residual,
         SWN::parameters::filter_nonbounding_loops(!opt.unfiltered,
+        SWN::parameters::completed_homology_class(opt.completed_class,
         SWN::parameters::concurrency(!opt.sequential,
         SWN::parameters::lp_solver(std::ref(lp),
         SWN::parameters::label_anchor_face(opt.anchor_face - 1,
-        SWN::parameters::report(std::ref(report))))))))))))))))
+        SWN::parameters::report(std::ref(report)))))))))))))))))
           .verbose(opt.verbose).sparse_linear_solver(sparse_solver));
     });
   };

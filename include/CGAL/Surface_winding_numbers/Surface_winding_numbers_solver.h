@@ -119,7 +119,8 @@ bool run_and_report(Solve_report& rep, F f)
 }
 
 // One solve of `chain` (per table edge) with the settings of the named parameters: epsilon,
-// verbose, use_reduced_residual, concurrency, keep_hodge_factorization, filter_nonbounding_loops and lp_solver.
+// verbose, use_reduced_residual, completed_homology_class, concurrency, keep_hodge_factorization,
+// filter_nonbounding_loops and lp_solver.
 // `anchor_face`: the table face of the named parameter label_anchor_face (npos: none), found by the caller.
 template <class LA, class NamedParameters>
 Core_result solve_with_parameters(Winding_number_core<LA>& core, const std::vector<double>& chain,
@@ -131,6 +132,7 @@ Core_result solve_with_parameters(Winding_number_core<LA>& core, const std::vect
   namespace snp = Surface_winding_numbers::internal_np;
   Solve_options options;
   options.epsilon = choose_parameter(get_parameter(np, snp::epsilon), default_epsilon);
+  options.completed_class = choose_parameter(get_parameter(np, snp::completed_homology_class), false);
   options.verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
   options.reduced_residual = choose_parameter(get_parameter(np, snp::use_reduced_residual), false);
   options.concurrent = allows_threads(choose_parameter(get_parameter(np, snp::concurrency), CGAL::Parallel_tag()));
@@ -304,7 +306,7 @@ public:
   \param label_map receives the winding number label W of every face
   \param np optional named parameters among `nonbounding_chain_map`, `nonbounding_chain_real_map`,
          `bounding_chain_map`, `winding_number_map`, `epsilon`, `lp_solver`, `use_reduced_residual`,
-         `filter_nonbounding_loops`, `label_anchor_face`, `label_confidence`, `confidence_map`, `region_map`,
+         `completed_homology_class`, `filter_nonbounding_loops`, `label_anchor_face`, `label_confidence`, `confidence_map`, `region_map`,
          `second_best_label_map`, `concurrency`, `keep_hodge_factorization`, `report`, `verbose` (see
          `CGAL::surface_winding_numbers()`).
   \pre `chain_map`, `label_map` and the output maps of `np` have a value for every element of `tm` they

@@ -16,6 +16,7 @@ enum nonbounding_chain_real_map_t { nonbounding_chain_real_map };
 enum bounding_chain_map_t { bounding_chain_map };
 enum winding_number_map_t { winding_number_map };
 enum epsilon_t { epsilon };
+enum completed_homology_class_t { completed_homology_class };
 enum lp_solver_t { lp_solver };
 enum use_reduced_residual_t { use_reduced_residual };
 enum concurrency_t { concurrency };
@@ -87,6 +88,10 @@ CGAL_SWN_NAMED_PARAMETER(second_best_label_map_t, second_best_label_map)
 
 /// relative cost of jumps of the residual function across the curve (paper: 0.01)
 CGAL_SWN_NAMED_PARAMETER(epsilon_t, epsilon)
+/// `true`: the residual problem of a broken curve integrates the closed 1-form of the curve with its gaps
+/// closed by shortest paths (default `false`: the harmonic part of the broken curve's, the paper's;
+/// \ref SWNBeyondEq11)
+CGAL_SWN_NAMED_PARAMETER(completed_homology_class_t, completed_homology_class)
 /// `std::ref(lp)` of a model of `SurfaceWindingNumbersLPTraits`
 CGAL_SWN_NAMED_PARAMETER(lp_solver_t, lp_solver)
 

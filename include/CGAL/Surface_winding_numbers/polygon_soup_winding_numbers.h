@@ -65,7 +65,7 @@ lives on the input's polygons, corners and edges.
        parameter `dual_chain`.
 \param labels receives W for every polygon
 \param np an optional sequence of named parameters: those of `CGAL::surface_winding_numbers()` (`epsilon`,
-       `lp_solver`, `use_reduced_residual`, `filter_nonbounding_loops`, `concurrency`, `report`, `verbose`,
+       `lp_solver`, `use_reduced_residual`, `completed_homology_class`, `filter_nonbounding_loops`, `concurrency`, `report`, `verbose`,
        `label_anchor_face` (here a polygon index; `std::size_t(-1)`: none), `label_confidence`,
        `sparse_linear_solver`), and
        `dual_chain`: a range of pairs `(a, b)` of polygon indices (as `std::pair` or `std::array`), each

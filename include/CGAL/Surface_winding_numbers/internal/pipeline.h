@@ -41,6 +41,7 @@ inline constexpr double default_epsilon = 0.01;
 struct Solve_options
 {
   double epsilon = default_epsilon;
+  bool completed_class = false;     // gamma from the curve with its gaps closed by shortest paths; false: the paper's
   bool verbose = false;
   bool reduced_residual = false;   // paper Sec. 6 instead of the exact Eq. 11
   bool concurrent = true;   // a second thread (named parameter concurrency): the Hodge projection's per-mesh part, the residual solver's
@@ -242,11 +243,12 @@ public:
         basis_solves.help();
         hodge_factorization.get();   // rethrows a failed factorization
       }
-      const std::vector<double> gamma = harmonic_part_of(r.u, endpoint, open_curve, options.harmonic_basis_max_classes, keep);
+      std::vector<double> gamma = harmonic_part_of(r.u, endpoint, open_curve, options.harmonic_basis_max_classes, keep);
       if(verbose && open_curve)
         std::cerr << "[swn] harmonic part: " << (basis_.assembled() ? "projection on " + std::to_string(basis_.size()) +
                                                  " harmonic 1-forms" : std::string("2-form Laplace solve")) << "\n";
       if(!options.keep_hodge_factorization) { basis_.release(); hodge_.release(); laplacian_.reset(); }
+      if(open_curve && options.completed_class) gamma = completed_chain_form(chain, gamma);
       rep.hodge_projection = open_curve;
       rep.time_hodge = clock.lap() + time_generators;
       if(verbose) std::cerr << "[swn] Darboux derivative and harmonic part: " << rep.time_hodge << " s\n";
@@ -365,6 +367,21 @@ public:
     prepare_hodge_projection(max_classes,
                              std::async(std::launch::deferred, [this] { return cohomology_generators(m_); }).share(), keep);
     return basis_.assembled() ? basis_.harmonic_part(gamma) : hodge_.harmonic_part(gamma);
+  }
+
+  // Beyond Eq. 11 (issue 46; named parameter completed_homology_class): the closed 1-form that the
+  // residual problem integrates, taken from the curve with its gaps closed by shortest paths (the
+  // Darboux derivative of its jump-harmonic function, Eq. 5; closed, with the integer periods of the
+  // completed curve) instead of the harmonic part of the broken curve's. `gamma` is returned where the
+  // completion leaves endpoints.
+  std::vector<double> completed_chain_form(const std::vector<double>& chain, const std::vector<double>& gamma)
+  {
+    std::vector<double> completed = shortest_path_completion(m_, chain);
+    for(std::size_t e = 0; e < m_.ne; ++e) completed[e] += chain[e];
+    const std::vector<char> endpoint = interior_endpoints(m_, completed);
+    if(std::find(endpoint.begin(), endpoint.end(), 1) != endpoint.end()) return gamma;
+    Jump_laplace_system<LA> L;
+    return darboux_derivative(m_, first_jump_laplace_solve(completed, endpoint, L), endpoint);
   }
 
   // The per-mesh part of the Hodge projection: the harmonic basis when the mesh has at most
