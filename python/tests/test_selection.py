@@ -1,7 +1,9 @@
 # Selection cleanup (the library's clean_face_selection() and clean_edge_selection()). Faces: on a torus (no
 # border, no corner) with a band of quads as the true region, isolated flipped faces are restored exactly and
 # random noise is cut at least fivefold; the border chain is the region's boundary. Edges: the border of a
-# rectangle on a grid disk with gaps, reversed pieces and spurious pieces gives the rectangle.
+# rectangle on a grid disk with gaps, reversed pieces and spurious pieces gives the rectangle. With a border: the
+# two sides of a band across a grid disk give the band; isolated and random noise on the band are removed; an exact
+# rectangle comes back unchanged.
 import numpy as np
 import pytest
 
@@ -40,9 +42,13 @@ def isolated_faces(seed, count):
     return chosen
 
 
-def boundary(selected):
+def boundary_of(faces, selected):
     """the boundary of the selected faces as a chain on the edges (the sides of two selected faces cancel)"""
-    return [(t[k], t[(k + 1) % 3]) for f, t in enumerate(F) if selected[f] for k in range(3)]
+    return [(t[k], t[(k + 1) % 3]) for f, t in enumerate(faces) if selected[f] for k in range(3)]
+
+
+def boundary(selected):
+    return boundary_of(F, selected)
 
 
 def test_clean_selection_keeps_the_region_and_what_is_all_or_nothing():
@@ -117,14 +123,54 @@ def test_clean_edge_selection_closes_gaps_and_drops_spurious_pieces():
     assert (swn.clean_edge_selection(VG, FG, h[np.arange(len(h)) % 3 != 1]).selected == big).all()
 
 
-def test_a_rectangles_corners_across_the_diagonals_are_cut_off():
+def test_an_exact_rectangle_comes_back_unchanged():
     # on the grid (diagonals from (a, b) to (a + 1, b + 1)) the outer triangle of the lower-right and of the
-    # upper-left corner cell has more neighbours outside the rectangle than inside: noise, cut along its diagonal
-    _, inside = grid_rectangle_loop(N, 5, 15, 4, 13)
+    # upper-left corner cell has two sides on the rectangle's border: a tooth, kept since no other face near it
+    # is noise
+    loop_vertices, inside = grid_rectangle_loop(N, 5, 15, 4, 13)
     rectangle = np.zeros(len(FG), bool)
     rectangle[inside] = True
     c = swn.clean_face_selection(VG, FG, rectangle)
-    assert np.flatnonzero(c.selected != rectangle).tolist() == [2 * (14 + N * 4), 2 * (5 + N * 12) + 1]
+    assert (c.selected == rectangle).all()
+    assert (c.bounding == edge_values(c.edges, polyline_halfedges(loop_vertices))).all()
+
+
+BAND = (np.arange(len(FG)) // 2 // N >= 5) & (np.arange(len(FG)) // 2 // N < 15)   # the rows 5 to 14 of cells
+
+
+@pytest.mark.parametrize("gap", [3, 5, 7, 11])
+def test_the_two_sides_of_a_band_across_a_disk_give_the_band(gap):
+    # two open curves from border to border, unoriented, with gaps: the border of the mesh closes them into a
+    # loop around the band
+    idx = lambda a, b: a + (N + 1) * b
+    sides = np.array([[idx(a, b), idx(a + 1, b)] for b in (5, 15) for a in range(N)])
+    selected = np.array([h[::-1] if k % 3 == 0 else h for k, h in enumerate(sides) if k % gap != 3 % gap])
+    c = swn.clean_edge_selection(VG, FG, selected)
+    assert (c.selected == BAND).all()
+    assert (c.bounding != 0).sum() == 2 * N and c.report["interior_endpoints"] > 0
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3, 4, 5])
+def test_noise_on_a_band_across_a_disk_is_removed(seed):
+    # isolated flipped faces on both sides of the band's border (the faces at the border of the mesh included)
+    # come back exactly; every face flipped with probability 0.08: the wrong faces drop at least fivefold
+    ring = [set(g for v in t for g in np.flatnonzero((FG == v).any(axis=1))) for t in FG]
+    chosen, taken = [], set()
+    for f in np.random.RandomState(seed).permutation(len(FG)):
+        if len(chosen) < 20 and not ring[f] & taken and len(set(BAND[list(ring[f])])) == 1:
+            chosen.append(f)
+            taken |= ring[f]
+    noisy = BAND.copy()
+    noisy[chosen] ^= True
+    assert (swn.clean_face_selection(VG, FG, noisy).selected == BAND).all()
+    noisy = BAND ^ (np.random.RandomState(seed).random_sample(len(FG)) < 0.08)
+    before = np.count_nonzero(noisy != BAND)
+    c = swn.clean_face_selection(VG, FG, noisy)
+    after = np.count_nonzero(c.selected != BAND)
+    assert before > 40 and 5 * after < before, (before, after)
+    # the bounding chain: the boundary of the cleaned faces inside the mesh (not along its border)
+    interior = edge_values(c.edges, boundary_of(FG, np.ones(len(FG), bool))) == 0
+    assert (c.bounding == edge_values(c.edges, boundary_of(FG, c.selected)) * interior).all()
 
 
 def test_bad_selections_are_refused():

@@ -35,12 +35,17 @@ namespace Surface_winding_numbers {
 
 The selection is cut into pieces, the maximal paths of selected edges through vertices where exactly two
 selected edges meet, and the pieces are grouped into clusters: two pieces whose ends are closer than five
-mean lengths of the selected edges are in one cluster (the pieces of one loop broken by gaps). Each piece
-is oriented along itself, in the sense that makes it turn counter-clockwise, seen from the side the faces
-face, around the centroid of its cluster (the length-weighted mean of the edges' midpoints): the
-orientation of a lasso drawn around a region. This is right for the borders of regions that are roughly
-star-shaped from their centroids, with gaps shorter than the clusters' reach; isolated pieces, whose
-orientation is then arbitrary, are what the surface winding numbers filter out.
+mean lengths of the selected edges are in one cluster (the pieces of one loop broken by gaps), and so are
+the pieces that end within that distance of one border cycle of the mesh (open curves that the border
+closes into loops, such as the two sides of a band across a disk). Within a cluster, the pieces are joined
+end to nearest end (nearest first) into groups that run head to tail: the pieces of one loop or one open
+curve, however straight, take one direction along it. Each group is oriented in the sense that makes it
+turn counter-clockwise, seen from the side the faces face, around the centroid of its cluster (the
+length-weighted mean of the edges' midpoints): the orientation of a lasso drawn around a region. This is
+right for the borders of regions that are roughly star-shaped from their centroids, with gaps shorter
+than the clusters' reach; a single open curve across the mesh, straight through its own centroid, has
+one direction along its whole length but either sense; isolated pieces, whose orientation is then
+arbitrary, are what the surface winding numbers filter out.
 
 Then `CGAL::surface_winding_numbers()` with a `bounding_chain_map` completes the selection: its labels
 are the selected region (nonzero), and the bounding chain is the cleaned selection, the closed border of
@@ -143,7 +148,9 @@ std::size_t orient_edge_selection(const TriangleMesh& tm, const EdgeRange& selec
     }
   }
 
-  // clusters: pieces whose ends are closer than five mean selected edge lengths (a loop broken by gaps)
+  // clusters: pieces whose ends are closer than five mean selected edge lengths (a loop broken by gaps),
+  // and pieces that end within that distance of one border cycle of the mesh (sides of one region that the
+  // border closes, such as the two sides of a band across a disk)
   const std::size_t n = pieces.size();
   std::vector<std::size_t> cluster(n);
   for(std::size_t i = 0; i < n; ++i) cluster[i] = i;
@@ -151,11 +158,67 @@ std::size_t orient_edge_selection(const TriangleMesh& tm, const EdgeRange& selec
   auto ends = [&](std::size_t i) {
     return std::array<Vector, 2>{point(source(pieces[i].front(), tm)), point(target(pieces[i].back(), tm))};
   };
+  auto squared = [](const Vector& v) { return CGAL::to_double(v.squared_length()); };
+  // for every end (2 i + s: s = 0 the start of piece i, 1 its end), the nearest end of another piece
+  std::vector<std::size_t> nearest(2 * n, std::size_t(-1));
+  std::vector<double> nearest_distance(2 * n, link * link);
   for(std::size_t i = 0; i < n; ++i)
     for(std::size_t j = i + 1; j < n; ++j)
+      for(std::size_t s = 0; s < 2; ++s)
+        for(std::size_t t = 0; t < 2; ++t)
+        {
+          const double d = squared(ends(i)[s] - ends(j)[t]);
+          if(d >= link * link) continue;
+          cluster[find(i)] = find(j);
+          if(d < nearest_distance[2 * i + s]) { nearest_distance[2 * i + s] = d; nearest[2 * i + s] = 2 * j + t; }
+          if(d < nearest_distance[2 * j + t]) { nearest_distance[2 * j + t] = d; nearest[2 * j + t] = 2 * i + s; }
+        }
+  {
+    std::vector<std::pair<Vector, std::size_t> > border;   // the border vertices and their cycles
+    auto on_cycle = get(CGAL::dynamic_halfedge_property_t<bool>(), tm);
+    std::size_t cycles = 0;
+    for(halfedge_descriptor h : halfedges(tm))
+    {
+      if(!is_border(h, tm) || get(on_cycle, h)) continue;
+      for(halfedge_descriptor g : halfedges_around_face(h, tm))
+      {
+        put(on_cycle, g, true);
+        border.emplace_back(point(target(g, tm)), cycles);
+      }
+      ++cycles;
+    }
+    std::vector<std::size_t> first(cycles, std::size_t(-1));   // a piece near every cycle
+    for(std::size_t i = 0; i < n; ++i)
       for(const Vector& p : ends(i))
-        for(const Vector& q : ends(j))
-          if(CGAL::to_double((p - q).squared_length()) < link * link) cluster[find(i)] = find(j);
+        for(const auto& b : border)
+          if(squared(p - b.first) < link * link)
+          {
+            if(first[b.second] == std::size_t(-1)) first[b.second] = i;
+            cluster[find(i)] = find(first[b.second]);
+          }
+  }
+  // the pieces of one loop go head to tail across its gaps: joined end to nearest end, nearest first,
+  // into groups in which each piece is along (flip 0) or against (flip 1) the group's direction
+  std::vector<std::size_t> group(n), flip(n, 0);   // flip relative to the parent in `group`
+  for(std::size_t i = 0; i < n; ++i) group[i] = i;
+  auto root = [&](std::size_t i, std::size_t& parity) {
+    parity = 0;
+    for(; group[i] != i; i = group[i]) parity ^= flip[i];
+    return i;
+  };
+  std::vector<std::size_t> order;
+  for(std::size_t e = 0; e < 2 * n; ++e) if(nearest[e] != std::size_t(-1)) order.push_back(e);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return nearest_distance[a] < nearest_distance[b]; });
+  for(std::size_t e : order)
+  {
+    const std::size_t f = nearest[e];
+    std::size_t pi, pj;
+    const std::size_t ri = root(e / 2, pi), rj = root(f / 2, pj);
+    if(ri == rj) continue;
+    // two starts or two ends meet: the pieces run in opposite directions
+    group[ri] = rj;
+    flip[ri] = pi ^ pj ^ ((e % 2 == f % 2) ? 1 : 0);
+  }
   // the length-weighted centroid of every cluster
   std::vector<Vector> centroid(n, NULL_VECTOR);
   std::vector<double> weight(n, 0.);
@@ -178,17 +241,26 @@ std::size_t orient_edge_selection(const TriangleMesh& tm, const EdgeRange& selec
       }
     return nm;
   };
-  std::vector<halfedge_descriptor> oriented;
+  // every group turns counter-clockwise around the centroid of its cluster
+  std::vector<double> turn(n, 0.), group_turn(n, 0.);
+  std::vector<std::size_t> parity(n);
   for(std::size_t i = 0; i < n; ++i)
   {
     const Vector c = centroid[find(i)] / weight[find(i)];
-    double turn = 0;
     for(halfedge_descriptor g : pieces[i])
     {
       const Vector p = point(source(g, tm)), q = point(target(g, tm));
-      turn += CGAL::to_double(CGAL::cross_product((p + q) / 2 - c, q - p) * normal(g));
+      turn[i] += CGAL::to_double(CGAL::cross_product((p + q) / 2 - c, q - p) * normal(g));
     }
-    for(halfedge_descriptor g : pieces[i]) oriented.push_back(turn < 0 ? opposite(g, tm) : g);
+    const std::size_t r = root(i, parity[i]);
+    group_turn[r] += parity[i] ? -turn[i] : turn[i];
+  }
+  std::vector<halfedge_descriptor> oriented;
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    std::size_t p;
+    const bool reverse = (parity[i] == 1) != (group_turn[root(i, p)] < 0);
+    for(halfedge_descriptor g : pieces[i]) oriented.push_back(reverse ? opposite(g, tm) : g);
   }
   add_halfedges_to_chain(tm, oriented, chain);
   return n;
