@@ -249,6 +249,7 @@ Solve_options solve_options(const py::dict& d)
   o.linear_solver = d["linear_solver"].cast<std::string>();
   o.reduced_residual = d["reduced_residual"].cast<bool>();
   o.filter_nonbounding_loops = d["filter_nonbounding_loops"].cast<bool>();
+  o.completed_homology_class = d["completed_homology_class"].cast<bool>();
   o.concurrency = d["concurrency"].cast<bool>();
   o.verbose = d["verbose"].cast<bool>();
   o.anchor_face = d["anchor_face"].cast<std::int64_t>();

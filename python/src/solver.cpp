@@ -77,12 +77,13 @@ public:
         SWN::parameters::winding_number_map(boost::make_iterator_property_map(out.w.begin(), get(boost::halfedge_index, mesh_)),
         SWN::parameters::epsilon(o.epsilon,
         SWN::parameters::use_reduced_residual(o.reduced_residual,
+        SWN::parameters::completed_homology_class(o.completed_homology_class,
         SWN::parameters::filter_nonbounding_loops(o.filter_nonbounding_loops,
         SWN::parameters::label_anchor_face(anchor,
         SWN::parameters::concurrency(o.concurrency,
         SWN::parameters::keep_hodge_factorization(keep,
         SWN::parameters::lp_solver(std::ref(lp),
-        SWN::parameters::report(std::ref(out.report))))))))))))).verbose(o.verbose);
+        SWN::parameters::report(std::ref(out.report)))))))))))))).verbose(o.verbose);
       const auto labels = boost::make_iterator_property_map(out.labels.begin(), fi);
       if(!o.confidence) return solver_.solve(boost::make_iterator_property_map(chain.begin(), ei), labels, np);
       // the confidence outputs (computed only when asked: a second instantiation of the solve)

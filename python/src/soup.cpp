@@ -171,11 +171,12 @@ py::dict solve_on_soup(const Triangle_soup& soup, const Curve_arrays& curves, co
           SWN::parameters::bounding_chain_map(Edge_value_map<int>{&edges, &bounding},
           SWN::parameters::epsilon(o.epsilon,
           SWN::parameters::use_reduced_residual(o.reduced_residual,
+          SWN::parameters::completed_homology_class(o.completed_homology_class,
           SWN::parameters::filter_nonbounding_loops(o.filter_nonbounding_loops,
           SWN::parameters::label_anchor_face(o.anchor_face < 0 ? std::size_t(-1) : std::size_t(o.anchor_face),
           SWN::parameters::concurrency(o.concurrency,
           SWN::parameters::lp_solver(std::ref(lp),
-          SWN::parameters::report(std::ref(report)))))))))))))
+          SWN::parameters::report(std::ref(report))))))))))))))
             .verbose(o.verbose).sparse_linear_solver(sparse_solver);
         if constexpr(!decltype(with_confidence)::value)
           return CGAL::polygon_soup_winding_numbers(points, polygons, curve, CGAL::make_property_map(labels), np);

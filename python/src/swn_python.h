@@ -70,6 +70,8 @@ struct Solve_options
   double epsilon = 0.01;
   std::string lp_solver, linear_solver;
   bool reduced_residual = false, filter_nonbounding_loops = true, concurrency = true, verbose = false;
+  /// the residual problem on the class of the curve completed by shortest paths (named parameter completed_homology_class)
+  bool completed_homology_class = false;
   /// the face whose label is 0 in its component (named parameter label_anchor_face); -1: none
   std::int64_t anchor_face = -1;
   /// compute the per-region confidence (named parameters label_confidence, region_map, ...)

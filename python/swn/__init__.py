@@ -165,7 +165,7 @@ def _choice(value, name, allowed):
 
 
 def _options(epsilon, lp_solver, linear_solver, reduced_residual, filter_nonbounding_loops, concurrency, verbose,
-             anchor_face=None, confidence=False):
+             anchor_face=None, confidence=False, completed_homology_class=False):
     """The settings of a solve, checked: ValueError naming the setting and its allowed values."""
     if anchor_face is not None and (isinstance(anchor_face, (bool, np.bool_)) or not isinstance(anchor_face, (int, np.integer))
                                     or anchor_face < 0):
@@ -180,6 +180,7 @@ def _options(epsilon, lp_solver, linear_solver, reduced_residual, filter_nonboun
             "linear_solver": _choice(linear_solver, "linear_solver", LINEAR_SOLVERS),
             "reduced_residual": _boolean(reduced_residual, "reduced_residual"),
             "filter_nonbounding_loops": _boolean(filter_nonbounding_loops, "filter_nonbounding_loops"),
+            "completed_homology_class": _boolean(completed_homology_class, "completed_homology_class"),
             "concurrency": _boolean(concurrency, "concurrency"), "verbose": _boolean(verbose, "verbose"),
             "anchor_face": -1 if anchor_face is None else int(anchor_face), "confidence": _boolean(confidence, "confidence")}
 
@@ -241,7 +242,8 @@ class Solver:
         return self._solver.number_of_faces
 
     def solve(self, curves, multiplicities=None, *, epsilon=0.01, lp_solver=None, reduced_residual=False,
-              filter_nonbounding_loops=True, anchor_face=None, confidence=False, concurrency=True, verbose=False):
+              filter_nonbounding_loops=True, anchor_face=None, confidence=False, concurrency=True, verbose=False,
+              completed_homology_class=False):
         """Winding numbers of ``curves`` (halfedges (k, 2) or vertex polylines) on this mesh.
 
         The settings are those of ``winding_numbers()`` (the sparse solver is the solver's). Returns a
@@ -251,13 +253,14 @@ class Solver:
         """
         vertices, offsets, m = _curve_arrays(curves, multiplicities)
         options = _options(epsilon, lp_solver, LINEAR_SOLVERS[0], reduced_residual, filter_nonbounding_loops,
-                           concurrency, verbose, anchor_face, confidence)
+                           concurrency, verbose, anchor_face, confidence, completed_homology_class)
         return _result(self._solver._solve(vertices, offsets, m, options), self.edges)
 
 
 def winding_numbers(V, F, curves=None, multiplicities=None, *, dual_chain=None, soup=False, epsilon=0.01,
                     lp_solver=None, linear_solver=None, reduced_residual=False, filter_nonbounding_loops=True,
-                    anchor_face=None, confidence=False, concurrency=True, verbose=False):
+                    anchor_face=None, confidence=False, concurrency=True, verbose=False,
+                    completed_homology_class=False):
     """Winding numbers of ``curves`` (and of ``dual_chain``) on the surface (V, F): one solve.
 
     ``F``: an (m, k) array or a sequence of polygons. An oriented 2-manifold triangle mesh is solved as a
@@ -273,7 +276,10 @@ def winding_numbers(V, F, curves=None, multiplicities=None, *, dual_chain=None, 
     ``filter_nonbounding_loops`` (``False``: labels are the rounded jump-harmonic function, paper Fig. 27),
     ``anchor_face`` (a face whose label is 0 in its component, instead of the label covering the largest
     area), ``confidence`` (``True``: the result's ``confidence``, a ``LabelConfidence``; on a soup per
-    input polygon), ``concurrency`` (``False``: the calling thread only), ``verbose`` (the steps on stderr).
+    input polygon), ``concurrency`` (``False``: the calling thread only), ``verbose`` (the steps on stderr),
+    ``completed_homology_class`` (``True``: for a broken curve, the residual problem in the homology class of
+    the curve with its gaps closed by shortest paths instead of the harmonic part's; off by default, see the
+    manual's "Beyond Eq. 11").
 
     Returns a ``WindingNumbers``. Raises ``ValueError`` on bad input and bad settings and ``RuntimeError``
     when the solver fails, with the library's messages.
@@ -282,7 +288,7 @@ def winding_numbers(V, F, curves=None, multiplicities=None, *, dual_chain=None, 
         raise ValueError("no curve: give curves, a dual_chain, or both")
     vertices, offsets, m = _curve_arrays([] if curves is None else curves, multiplicities)
     options = _options(epsilon, lp_solver, linear_solver, reduced_residual, filter_nonbounding_loops, concurrency,
-                       verbose, anchor_face, confidence)
+                       verbose, anchor_face, confidence, completed_homology_class)
     r = _swn._winding_numbers(V, F, vertices, offsets, m, _dual_pairs(dual_chain), _boolean(soup, "soup"), options)
     _warn(r["warnings"], 2)
     r["edges"].flags.writeable = False

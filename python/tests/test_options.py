@@ -90,3 +90,25 @@ def test_bad_settings(settings, message):
             else:
                 swn.Solver(V, F).solve([loop], **settings)
         assert str(e.value) == message
+
+
+def test_completed_homology_class_keeps_a_meridian_with_a_half_gap():
+    # 6 of a meridian's 12 edges drawn: the broken curve's harmonic part has a period below 1/2 around the
+    # tube, so Eq. 11 (the default) rounds G to nothing; with completed_homology_class the residual problem
+    # is in the class of the meridian closed along its gap, and G is that meridian (12 edges, upwards).
+    # One label everywhere either way. On a polygon soup the same.
+    nu, nv = 24, 12
+    V, F, idx = torus(nu, nv)
+    half = [idx(12, j) for j in range(7)]
+    meridian = [(idx(12, j), idx(12, j + 1)) for j in range(nv)]
+    for soup in (False, True):
+        plain = swn.winding_numbers(V, F, [half], soup=soup)
+        assert plain.report["interior_endpoints"] == 2
+        assert not plain.G.any() and len(set(plain.W.tolist())) == 1
+        r = swn.winding_numbers(V, F, [half], soup=soup, completed_homology_class=True)
+        assert (r.G == edge_values(r.edges, meridian)).all()
+        assert len(set(r.W.tolist())) == 1
+    solver = swn.Solver(V, F)
+    assert (solver.solve([half], completed_homology_class=True).G == edge_values(solver.edges, meridian)).all()
+    with pytest.raises(ValueError, match="completed_homology_class"):
+        swn.winding_numbers(V, F, [half], completed_homology_class="yes")
