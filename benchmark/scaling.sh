@@ -2,7 +2,7 @@
 # Whole-run and residual-solver timings at several mesh sizes:
 # LEMON multilevel (the default) vs LEMON network simplex vs GLPK, CHOLMOD vs Eigen's LDLT, exact vs
 # reduced residual. Not a test; writes one log per instance to benchmark/results/scaling/, cited in
-# benchmark/RESULTS.md ("Speed in detail") and benchmark/residual_solvers.md.
+# benchmark/SPEED.md ("Speed in detail") and benchmark/residual_solvers.md.
 #
 #   benchmark/scaling.sh [BENCH_BINARY [NAME]]
 #
