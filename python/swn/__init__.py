@@ -309,12 +309,13 @@ def clean_face_selection(V, F, selection, *, epsilon=0.01, lp_solver=None, linea
     ``selection``: a boolean mask of the m faces, or an integer array of the selected faces' indices (m integers
     all 0 or 1 are refused as an ambiguous mask). A face whose state (selected or not) differs from that of more
     than half of the faces around its vertices and of more than half of its neighbours across edges is noise, but
-    for a tooth of the border (a spike, a notch or a corner) with no other noise face within two rings: an exact
-    selection comes back unchanged. The border of the selection without the sides of noise faces is the curve,
-    whose winding numbers close its gaps along short paths and filter out what remains of small pieces. The cleaned region is the set
-    of faces whose label is above the reference label of their connected component: the label covering the
-    most unselected faces (a component whose faces are all selected stays selected). A cluster of noise large
-    enough that its faces see mostly their own state is kept. The settings are those of ``winding_numbers()``.
+    for a tooth of the border (a spike, a notch or a corner of one face) with no noise face but teeth within two
+    rings: an exact selection comes back unchanged. The border of the selection without the sides of noise faces
+    is the curve, whose winding numbers close its gaps along short paths and filter out what remains of small
+    pieces. The cleaned region is the set of faces whose label is above the reference label of their connected
+    component: the label covering the most unselected faces (a component whose faces are all selected stays
+    selected). A cluster of noise large enough that its faces see mostly their own state is kept. The settings
+    are those of ``winding_numbers()``.
     Returns a ``CleanSelection``. Raises ``ValueError`` on a bad mesh, selection or setting, ``RuntimeError``
     when the solver fails.
     """
