@@ -347,6 +347,41 @@ TEST(CurvesOffMesh, ClosedDrawingsAlongEdgesAndThroughVerticesStayClosed)
   }
 }
 
+TEST(CurvesOffMesh, PiecesAlongTheBorderAreDroppedAndCounted)
+{
+  // grid4 (the square [0,3]^2): a closed stroke whose one piece along the border runs through its first
+  // point; a stroke along the border with a bump inside, then cutting a corner off; a loop all along the
+  // border
+  auto P = [](double x, double y) { return Point(x, y, 0); };
+  const Polylines strokes{{P(1, 0), P(2, 0), P(2, 1), P(0, 1), P(0, 0), P(1, 0)},
+                          {P(0, 0), P(1, 0), P(1, 1), P(2, 1), P(2, 0), P(3, 0), P(3, 2), P(2, 2), P(2, 3)},
+                          {P(0, 0), P(3, 0), P(3, 3), P(0, 3), P(0, 0)}};
+  // what is left: the strokes without their pieces along the border
+  const Polylines rest{{P(2, 0), P(2, 1), P(0, 1)}, {P(1, 0), P(1, 1), P(2, 1), P(2, 0)}, {P(3, 2), P(2, 2), P(2, 3)}};
+  Mesh m = read(tdata + "grid4.off"), n = m;
+  auto chain = m.add_property_map<Mesh::Edge_index, int>("e:chain", 0).first;
+  auto expected = n.add_property_map<Mesh::Edge_index, int>("e:chain", 0).first;
+  const auto r = SWN::polylines_to_chain(m, strokes, chain);
+  ASSERT_TRUE(r) << r.error;
+  EXPECT_EQ(r.border_pieces, 4u);
+  EXPECT_EQ(r.polyline_border_pieces, (std::vector<std::size_t>{1, 2, 1}));
+  EXPECT_EQ(r.failed_walks, 0u);
+  const auto s = SWN::polylines_to_chain(n, rest, expected);
+  ASSERT_TRUE(s) << s.error;
+  EXPECT_EQ(s.border_pieces, 0u);
+  EXPECT_EQ(r.curves, s.curves);
+  ASSERT_EQ(m.number_of_edges(), n.number_of_edges());
+  for(auto e : m.edges()) EXPECT_EQ(chain[e], expected[e]) << "edge " << e;
+  // only along the border: nothing on the mesh, no error
+  Mesh b = read(tdata + "grid4.off");
+  auto none = b.add_property_map<Mesh::Edge_index, int>("e:chain", 0).first;
+  const auto t = SWN::polylines_to_chain(b, Polylines{strokes[2]}, none);
+  ASSERT_TRUE(t) << t.error;
+  EXPECT_EQ(t.border_pieces, 1u);
+  EXPECT_EQ(t.curves, 0u);
+  for(auto e : b.edges()) EXPECT_EQ(none[e], 0) << "edge " << e;
+}
+
 // the regular pentagram on grid10 (centre 0.5, 0.5, circumradius r), drawn counter-clockwise: winding
 // number 2 in the inner pentagon, 1 in the five tips; its crossings are inside faces
 Polylines pentagram(double r)

@@ -164,8 +164,8 @@ TEST(ToolCurves, PolylinesReportTheLibrarysCountsOnConsoleAndInSummary)
   const std::string file = (dir / "stroke.obj").string();
   const Tool_run r = run(grid + " --polylines '" + file + "' --output-dir '" + (dir / "out").string() + "'");
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_NE(r.out.find("polylines " + file + ": 1 polylines, 3 points (1 off the surface), 0 failed walks, 0 crossings: "
-                       "1 curves; cut: 4 vertices added"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("polylines " + file + ": 1 polylines, 3 points (1 off the surface), 0 failed walks, 0 pieces along "
+                       "the border dropped, 0 crossings: 1 curves; cut: 4 vertices added"), std::string::npos) << r.out;
   EXPECT_NE(r.err.find("warning: " + file + ":6: polyline 0: 1 of its 3 points are farther than the mean edge length"),
             std::string::npos) << "a stroke that loses points warns, with its `l` line: " << r.err;
   const std::string summary = slurp((dir / "out" / "summary.json").string());
@@ -201,7 +201,7 @@ TEST(ToolCurves, StrokesCrossingInsideAFaceAreCutInOnceAndReported)
   const std::string file = (dir / "cross.obj").string();
   const Tool_run r = run(grid + " --polylines '" + file + "' --output-dir '" + (dir / "out").string() + "'");
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_NE(r.out.find("0 failed walks, 1 crossings: 2 curves"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("0 failed walks, 0 pieces along the border dropped, 1 crossings: 2 curves"), std::string::npos) << r.out;
   const std::string summary = slurp((dir / "out" / "summary.json").string());
   const std::size_t at = summary.find("\"curves_off_mesh\"");
   ASSERT_NE(at, std::string::npos) << summary;
@@ -273,6 +273,42 @@ TEST(ToolCurves, MessagesNameTheRecordThatFails)
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("mesh_and_stroke.obj:38: the segment from vertex 16 to vertex 17"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("give it with --polylines FILE"), std::string::npos) << r.err;
+  fs::remove_all(dir);
+}
+
+TEST(ToolCurves, StrokesAlongTheBorderAreDroppedAndSaidSo)
+{
+  const fs::path dir = fresh_dir("border_strokes");
+  fs::create_directories(dir);
+  // only along the border of grid4: no curve left, and the error says why, at the stroke's `l` line
+  std::ofstream(dir / "along.obj") << "v 0 0 0\nv 3 0 0\nv 3 3 0\nl 1 2 3\n";
+  const Tool_run a = run(grid + " --polylines '" + (dir / "along.obj").string() + "' --output-dir '" + (dir / "a").string() + "'");
+  EXPECT_EQ(a.status, 2);
+  EXPECT_NE(a.err.find("swn: error: " + (dir / "along.obj").string() + ":4: no curve left on the surface: it runs along the "
+                       "border of the mesh (1 piece dropped)"), std::string::npos) << a.err;
+  EXPECT_EQ(a.err.find("cancels out"), std::string::npos) << a.err;
+  EXPECT_FALSE(fs::exists(dir / "a"));
+  // along the border from (0,0) to (2,0), then inside to (2,2) and (0,2): the piece along the border is
+  // counted, and the labels are those of the stroke without it
+  std::ofstream(dir / "part.obj") << "v 0 0 0\nv 2 0 0\nv 2 2 0\nv 0 2 0\nl 1 2 3 4\n";
+  std::ofstream(dir / "rest.obj") << "v 2 0 0\nv 2 2 0\nv 0 2 0\nl 1 2 3\n";
+  const std::string part = (dir / "part.obj").string();
+  const Tool_run p = run(grid + " --polylines '" + part + "' --output-dir '" + (dir / "part").string() + "'");
+  ASSERT_EQ(p.status, 0) << p.err;
+  EXPECT_NE(p.out.find("0 failed walks, 1 pieces along the border dropped, 0 crossings: 1 curves"), std::string::npos) << p.out;
+  EXPECT_NE(p.err.find("warning: " + part + ": 1 piece of curve along the border of the mesh dropped"), std::string::npos) << p.err;
+  const std::string summary = slurp((dir / "part" / "summary.json").string());
+  const std::size_t at = summary.find("\"curves_off_mesh\"");
+  ASSERT_NE(at, std::string::npos) << summary;
+  EXPECT_EQ(json_number(summary, "border_pieces", at), 1);
+  const Tool_run v = run(grid + " --polylines '" + part + "' --verbose");
+  EXPECT_NE(v.err.find("[swn] " + part + ":5: polyline 0: on the surface in 1 piece; 1 piece along the border of the mesh dropped"),
+            std::string::npos) << v.err;
+  const Tool_run r = run(grid + " --quiet --polylines '" + (dir / "rest.obj").string() + "' --output-dir '" + (dir / "rest").string() + "'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::vector<int> labels = read_labels(dir / "part" / "labels.txt");
+  EXPECT_EQ(labels, read_labels(dir / "rest" / "labels.txt"));
+  EXPECT_EQ(histogram(labels).size(), 2u) << "the square [0,2]^2 is labelled";
   fs::remove_all(dir);
 }
 

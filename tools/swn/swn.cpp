@@ -282,7 +282,8 @@ void json_off_mesh(SIO::Json& j, const std::vector<SIO::Off_mesh_report>& report
       .key("polylines").value(r.polylines);
     if(r.stamp) j.key("stamped_polylines").value(r.stamped_polylines);
     j.key("points").value(r.points).key("points_off_surface").value(r.points_off_surface)
-      .key("failed_walks").value(r.failed_walks).key("crossing_vertices").value(r.crossing_vertices)
+      .key("failed_walks").value(r.failed_walks).key("border_pieces").value(r.border_pieces)
+      .key("crossing_vertices").value(r.crossing_vertices)
       .key("curves").value(r.curves).key("cut_vertices").value(r.cut_vertices).key("cut_faces").value(r.cut_faces)
       .key("refined_pieces").value(r.refined_pieces).key("refinement_vertices").value(r.refinement_vertices)
       .key("refinement_faces").value(r.refinement_faces).end_object();

@@ -48,6 +48,11 @@ struct Polylines_to_chain_result
   /// segments between two points near the surface that the walk could not follow (border reached, or the
   /// plane section turning away): each one makes a gap
   std::size_t failed_walks = 0;
+  /// pieces of curve along border edges of the mesh (maximal runs of consecutive edges), dropped: a chain
+  /// may not lie on a border edge, which has no face on its other side for the winding number to jump to
+  std::size_t border_pieces = 0;
+  /// for each polyline, its pieces along the border (they add up to `border_pieces`)
+  std::vector<std::size_t> polyline_border_pieces;
   /// \deprecated always 0: pieces of curve that cross get a vertex of the cut where they cross
   /// (`Conforming_cut_result::crossing_vertices`)
   std::size_t dropped_crossings = 0;
@@ -89,6 +94,12 @@ walk's plane are on the walk: a polyline that runs along edges, or through verti
 closed one stays closed. A polyline whose last point equals its first is closed. Where two pieces of curve
 cross inside a face (self-intersecting strokes), the cut puts a vertex at the crossing (one cut for all
 the curves). The open ends of a polyline end at its first and last edge crossing.
+
+The pieces of curve that run along border edges of the mesh are dropped, since a chain may not lie on a
+border edge; they are counted in `Polylines_to_chain_result::border_pieces` and, per polyline, in
+`Polylines_to_chain_result::polyline_border_pieces`. What is left of the curve ends on the border there,
+and the labels are those of the curve without the pieces along the border. A polyline drawn only along
+the border puts no curve on the mesh (no error: `Polylines_to_chain_result::curves` does not count it).
 
 The geometric queries (closest points, walks) run on the mesh's coordinates multiplied by a power of two
 that brings its bounding box to unit size, so that a mesh and its copies scaled by any power of ten from
@@ -212,6 +223,7 @@ polylines_to_chain(TriangleMesh& tm, const PolylineRange& polylines, ChainMap ch
 
   // ---- the spots of every curve, polyline by polyline
   std::vector<std::vector<Spot> > curves;
+  std::vector<std::size_t> curve_polyline;   // the polyline of every curve
   c = 0;
   for(const auto& polyline : polylines)
   {
@@ -299,6 +311,7 @@ polylines_to_chain(TriangleMesh& tm, const PolylineRange& polylines, ChainMap ch
       if(indices[p].empty()) continue;
       result.pieces.back().push_back(indices[p]);
       curves.push_back(std::move(pieces[p]));
+      curve_polyline.push_back(c);
     }
     ++c;
   }
@@ -350,9 +363,13 @@ polylines_to_chain(TriangleMesh& tm, const PolylineRange& polylines, ChainMap ch
     else { w[k] = FT(1 - t); w[(k + 1) % 3] = FT(t); }
     return Location(f, w);
   };
-  for(auto& curve : curves)
+  result.polyline_border_pieces.assign(result.pieces.size(), 0);
+  for(std::size_t i = 0; i < curves.size(); ++i)
   {
+    const std::vector<Spot>& curve = curves[i];
     std::vector<std::vector<Spot> > parts(1);
+    std::size_t border_pieces = 0;
+    bool on_border = false, first_on_border = false, segments = false;   // the last and the first segment
     for(Spot s : curve)
     {
       if(s.kind == Spot::EDGE && (s.t < 0.02 || s.t > 0.98))
@@ -362,11 +379,23 @@ polylines_to_chain(TriangleMesh& tm, const PolylineRange& polylines, ChainMap ch
         s.p = get(spm, s.v);
       }
       if(!parts.back().empty() && same(parts.back().back(), s)) continue;
-      if(!parts.back().empty() && along_border(parts.back().back(), s)) parts.emplace_back();
+      if(!parts.back().empty())
+      {
+        const bool border = along_border(parts.back().back(), s);
+        if(border) parts.emplace_back();
+        border_pieces += border && !on_border;
+        if(!segments) first_on_border = border;
+        on_border = border;
+        segments = true;
+      }
       parts.back().push_back(s);
       if(parts.back().size() > 2 && redundant(parts.back()[parts.back().size() - 3], parts.back()[parts.back().size() - 2], s))
         parts.back().erase(parts.back().end() - 2);
     }
+    // a closed curve whose first and last segments are along the border: one piece along the border
+    if(border_pieces > 1 && first_on_border && on_border && same(curve.front(), curve.back())) --border_pieces;
+    result.border_pieces += border_pieces;
+    result.polyline_border_pieces[curve_polyline[i]] += border_pieces;
     auto& loop = parts.front();   // a closed curve: its first point too
     if(parts.size() == 1 && loop.size() > 3 && same(loop.front(), loop.back()) && redundant(loop[loop.size() - 2], loop[0], loop[1]))
     {

@@ -64,12 +64,14 @@ struct Off_mesh_report
   /// missing the mesh, meeting the back of a face or jumping to another layer breaks a polyline)
   std::size_t polylines = 0, stamped_polylines = 0;
   /// `Polylines_to_chain_result`: points (a stamp: of the stamped polylines), points farther than the mean
-  /// edge length from the surface, segments the walk could not follow, vertices the cut put where
-  /// curves cross inside a face (`Conforming_cut_result::crossing_vertices`), curves put on the mesh
-  std::size_t points = 0, points_off_surface = 0, failed_walks = 0, crossing_vertices = 0, curves = 0;
+  /// edge length from the surface, segments the walk could not follow, pieces along the border of the
+  /// mesh dropped, vertices the cut put where curves cross inside a face
+  /// (`Conforming_cut_result::crossing_vertices`), curves put on the mesh
+  std::size_t points = 0, points_off_surface = 0, failed_walks = 0, border_pieces = 0, crossing_vertices = 0, curves = 0;
   /// the cut: vertices and faces added, short pieces refined and the vertices and faces that added
   std::size_t cut_vertices = 0, cut_faces = 0, refined_pieces = 0, refinement_vertices = 0, refinement_faces = 0;
-  /// one line per polyline broken into pieces or losing points (`FILE:LINE: ...`), for `--verbose`
+  /// one line per polyline broken into pieces, losing points or pieces along the border (`FILE:LINE: ...`),
+  /// for `--verbose`
   std::vector<std::string> details;
 };
 
@@ -79,7 +81,8 @@ inline std::string summary_line(const Off_mesh_report& r)
   std::string s = std::string(r.stamp ? "stamp " : "polylines ") + r.file + ": " + std::to_string(r.polylines) + " polylines";
   if(r.stamp) s += " stamped as " + std::to_string(r.stamped_polylines);
   return s + ", " + std::to_string(r.points) + " points (" + std::to_string(r.points_off_surface) + " off the surface), " +
-         std::to_string(r.failed_walks) + " failed walks, " + std::to_string(r.crossing_vertices) + " crossings: " +
+         std::to_string(r.failed_walks) + " failed walks, " + std::to_string(r.border_pieces) + " pieces along the border "
+         "dropped, " + std::to_string(r.crossing_vertices) + " crossings: " +
          std::to_string(r.curves) + " curves; cut: " + std::to_string(r.cut_vertices) + " vertices added, " +
          std::to_string(r.refined_pieces) + " pieces refined (" + std::to_string(r.refinement_vertices) + " vertices)";
 }
@@ -115,15 +118,17 @@ void polyline_details(const Result& r, const PolylineRange& given, const std::ve
       for(std::size_t i : piece) if(i < distinct) on[i] = true;
     const std::size_t kept = std::size_t(std::count(on.begin(), on.end(), true));
     const bool broken = pieces.size() > 1 || (closed && pieces.size() == 1 && !pieces[0].empty() && pieces[0].front() != pieces[0].back());
+    const std::size_t border = k < r.polyline_border_pieces.size() ? r.polyline_border_pieces[k] : 0;
     const std::string where = Input_error::format(report.file, k < lines.size() ? lines[k] : 0,
                                                   std::string(report.stamp ? "stamped polyline " : "polyline ") + std::to_string(k));
     ++k;
-    if(kept == 0 || (kept == distinct && !broken)) continue;   // nothing lost (no point near: the library's warning)
+    if(kept == 0 || (kept == distinct && !broken && border == 0)) continue;   // nothing lost (no point near: the library's warning)
     std::string d = where + ": ";
     if(kept < distinct) d += std::to_string(distinct - kept) + " of its " + std::to_string(distinct) +
                              " points are farther than the mean edge length from the surface and dropped; ";
     d += "on the surface in " + std::to_string(pieces.size()) + (pieces.size() == 1 ? " piece" : " pieces") +
          (broken ? " (gaps)" : "");
+    if(border > 0) d += "; " + std::to_string(border) + (border == 1 ? " piece" : " pieces") + " along the border of the mesh dropped";
     report.details.push_back(d);
     if(report.stamp || kept == distinct) continue;   // warnings: the polylines as drawn that lose points
     if(warned < 10) { warn(d); ++warned; }
@@ -143,8 +148,8 @@ void polyline_details(const Result& r, const PolylineRange& given, const std::ve
   \param mesh_file the mesh's file, named when the stamp fails because of the mesh
   \returns one report per file (polylines first, then the stamp)
   \throws Input_error when there is no curve at all on the surface afterwards (every point too far, every
-  ray missing or meeting the back of the faces, or curves that cancel out), and when the mesh's size puts
-  the stamped points out of the range of doubles.
+  ray missing or meeting the back of the faces, every piece along the border of the mesh, or curves that
+  cancel out), and when the mesh's size puts the stamped points out of the range of doubles.
 */
 template <class Point, class Warn>
 std::vector<Off_mesh_report> add_off_mesh_curves(Cut_result<Point>& cut, const Off_mesh_curves& curves,
@@ -158,6 +163,8 @@ std::vector<Off_mesh_report> add_off_mesh_curves(Cut_result<Point>& cut, const O
   for(auto e : mesh.edges()) chain[e] = cut.chain[std::size_t(e)];
   std::vector<Off_mesh_report> reports;
   std::size_t first_line_on_surface = 0;   // the line of the first polyline put on the surface
+  std::string border_file;   // the file and line of the first polyline with a piece along the border
+  std::size_t border_line = 0;
   // the input face of every face: the face it is a piece of (polylines_to_chain()), and that one's
   auto origin = mesh.template add_property_map<typename Mesh::Face_index, typename Mesh::Face_index>("f:swn_off_mesh_origin").first;
   auto put_on_mesh = [&](const std::vector<std::vector<Point> >& polylines, Off_mesh_report& report,
@@ -174,6 +181,9 @@ std::vector<Off_mesh_report> add_off_mesh_curves(Cut_result<Point>& cut, const O
     report.points = r.points;
     report.points_off_surface = r.points_off_surface;
     report.failed_walks = r.failed_walks;
+    report.border_pieces = r.border_pieces;
+    for(std::size_t k = 0; k < r.polyline_border_pieces.size() && border_file.empty(); ++k)
+      if(r.polyline_border_pieces[k] > 0) { border_file = report.file; border_line = k < lines.size() ? lines[k] : 0; }
     report.crossing_vertices = r.cut.crossing_vertices;
     report.curves = r.curves;
     report.cut_vertices = r.cut.cut_vertices;
@@ -185,6 +195,9 @@ std::vector<Off_mesh_report> add_off_mesh_curves(Cut_result<Point>& cut, const O
     if(report.failed_walks > 0)
       warn(report.file + ": " + std::to_string(report.failed_walks) + " segments could not be followed along the surface "
            "(the border, or a fold the walk cannot cross): gaps");
+    if(report.border_pieces > 0)
+      warn(report.file + ": " + std::to_string(report.border_pieces) + (report.border_pieces == 1 ? " piece" : " pieces") +
+           " of curve along the border of the mesh dropped (curves may end on the border, not run along it)");
     cut.cut = cut.cut || report.cut_vertices > 0;
     cut.cut_new_vertices += report.cut_vertices;
     cut.cut_new_faces += report.cut_faces;
@@ -250,8 +263,12 @@ std::vector<Off_mesh_report> add_off_mesh_curves(Cut_result<Point>& cut, const O
   for(auto e : mesh.edges()) any = any || chain[e] != 0;
   if(!any)
   {
-    std::size_t points = 0, off = 0;
-    for(const Off_mesh_report& r : reports) { points += r.points; off += r.points_off_surface; }
+    std::size_t points = 0, off = 0, border = 0, put = 0;
+    for(const Off_mesh_report& r : reports) { points += r.points; off += r.points_off_surface; border += r.border_pieces; put += r.curves; }
+    if(off < points && put == 0 && border > 0)
+      throw Input_error(border_file, border_line, "no curve left on the surface: it runs along the "
+                        "border of the mesh (" + std::to_string(border) + (border == 1 ? " piece" : " pieces") + " dropped), "
+                        "and curves may end on the border, not run along it");
     const bool polylines = !curves.polylines_file.empty();
     throw Input_error(polylines ? curves.polylines_file : curves.stamp_file, off == points ? 0 : first_line_on_surface,
                       off == points ? "no curve on the surface (every point is farther than the mean edge length from it)"
