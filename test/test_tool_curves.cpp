@@ -142,15 +142,6 @@ TEST(ToolCurves, BadFilesGiveFileLineOrAWarning)
   fs::remove_all(dir);
 }
 
-// the number after "KEY": in `json` (the first one at or after `from`); -1 if none
-double json_number(const std::string& json, const std::string& key, std::size_t from = 0)
-{
-  std::smatch m;
-  const std::regex number("\"" + key + "\":\\s*(-?[0-9.eE+]+)");
-  const std::string tail = json.substr(std::min(from, json.size()));
-  return std::regex_search(tail, m, number) ? std::stod(m[1]) : -1;
-}
-
 // grid4.off: the square [0,3]^2 in z = 0, 3 x 3 unit squares split along (i,j)-(i+1,j+1), normals +z
 const std::string grid = "'" + std::string(SWN_TEST_DATA_DIR) + "/grid4.off'";
 

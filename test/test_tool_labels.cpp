@@ -146,13 +146,6 @@ TEST(ToolLabels, PerInputFaceLabelsAfterACutAreTheAnalyticOnesAndTheAnchorFaceIs
   fs::remove_all(dir);
 }
 
-// the number after `"key": ` in a JSON text (NaN if absent)
-double json_number(const std::string& text, const std::string& key)
-{
-  const std::size_t at = text.find("\"" + key + "\": ");
-  return at == std::string::npos ? std::nan("") : std::strtod(text.c_str() + at + key.size() + 4, nullptr);
-}
-
 TEST(ToolLabels, AnchorFaceAndConfidenceOnTheSoupRoute)
 {
   // the same grid with its two triangles per cell merged into quads: solved as a polygon soup, no cut;

@@ -58,7 +58,7 @@ struct Soup_run
 {
   Tool_run r;
   std::vector<int> labels;
-  std::string summary, w_obj;
+  std::string summary, w_obj, nonbounding_obj;
   std::vector<std::vector<std::size_t>> ply_faces;
 };
 
@@ -71,6 +71,7 @@ Soup_run solve(const std::string& args, const std::string& name)
   s.labels = read_labels(out / "labels.txt");
   s.summary = slurp((out / "summary.json").string());
   s.w_obj = slurp((out / "w.obj").string());
+  s.nonbounding_obj = slurp((out / "nonbounding.obj").string());
   std::vector<CGAL::Epick::Point_3> points;
   EXPECT_TRUE(CGAL::IO::read_polygon_soup((out / "mesh.ply").string(), points, s.ply_faces));
   for(const char* f : {"bounding.obj", "nonbounding.obj", "completed.obj"}) EXPECT_TRUE(fs::exists(out / f)) << f;
@@ -113,6 +114,47 @@ TEST(ToolSoup, QuadTorusWithAnObjLoopLabelsExactlyTheQuadsItEncloses)
   for(const char* key : {"\"euler_characteristic\": 0,", "\"orientable\": true,", "\"genus\": 1,"})
     EXPECT_NE(s.summary.find(key), std::string::npos) << key << " not in " << s.summary;
   EXPECT_NE(s.r.out.find("Euler characteristic 0, orientable, genus 1"), std::string::npos) << s.r.out;
+}
+
+TEST(ToolSoup, CompletedClassMakesAHalfMeridianTheWholeMeridianOnBothRoutes)
+{
+  // 8 of the 16 edges of the meridian i = 12 of a 24 x 16 torus (no piece short enough to be refined):
+  // by default Eq. 11 rounds G to nothing; with --completed-class (the named parameter
+  // completed_homology_class) G is the meridian closed along its gap, all its 16 edges. One label either
+  // way. On the quads (polygon soup route) and on the quads split in two (triangle mesh route).
+  Obj_writer quads = quad_torus(24, 16), triangles = quads;
+  triangles.f.clear();
+  for(const auto& q : quads.f)
+  {
+    triangles.f.push_back({q[0], q[1], q[2]});
+    triangles.f.push_back({q[0], q[2], q[3]});
+  }
+  std::string meridian = "# mesh vertices:";
+  quads.extra = "l";
+  for(int j = 0; j < 16; ++j)
+  {
+    if(j <= 8) quads.extra += " " + std::to_string(j * 24 + 12 + 1);
+    meridian += " " + std::to_string(j * 24 + 12);
+  }
+  quads.extra += "\n";
+  triangles.extra = quads.extra;
+  for(const Obj_writer* t : {&quads, &triangles})
+  {
+    const std::string mesh = "'" + t->write("half_meridian") + "'";
+    const Soup_run plain = solve(mesh, "half_meridian_plain");
+    ASSERT_EQ(plain.r.status, 0) << plain.r.err;
+    EXPECT_EQ(json_number(plain.summary, "interior_endpoints"), 2) << plain.summary;
+    EXPECT_EQ(json_number(plain.summary, "nonbounding_edges"), 0) << plain.summary;
+    EXPECT_EQ(histogram(plain.labels).size(), 1u);
+    const Soup_run completed = solve(mesh + " --completed-class", "half_meridian_completed");
+    ASSERT_EQ(completed.r.status, 0) << completed.r.err;
+    EXPECT_EQ(json_number(completed.summary, "nonbounding_edges"), 16) << completed.summary;
+    EXPECT_EQ(json_number(completed.summary, "bounding_edges"), 0) << completed.summary;
+    EXPECT_NE(completed.nonbounding_obj.find(meridian + "\n"), std::string::npos) << completed.nonbounding_obj;
+    EXPECT_EQ(chain_edges_in_obj(completed.nonbounding_obj), 16);
+    EXPECT_EQ(histogram(completed.labels).size(), 1u);
+    EXPECT_EQ(completed.summary.find("\"polygon_soup\"") != std::string::npos, t == &quads) << completed.summary;
+  }
 }
 
 TEST(ToolSoup, MoebiusStripWithDualChainRecordsAndACenterlineWarning)

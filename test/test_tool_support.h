@@ -4,10 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
@@ -89,6 +91,15 @@ inline std::map<int, int> solve_demo(const std::string& args, const std::string&
   const std::map<int, int> h = histogram(read_labels(out / "labels.txt"));
   fs::remove_all(out);
   return h;
+}
+
+// the number after "KEY": in `json` (the first one at or after `from`); -1 if none
+inline double json_number(const std::string& json, const std::string& key, std::size_t from = 0)
+{
+  std::smatch m;
+  const std::regex number("\"" + key + "\":\\s*(-?[0-9.eE+]+)");
+  const std::string tail = json.substr(std::min(from, json.size()));
+  return std::regex_search(tail, m, number) ? std::stod(m[1]) : -1;
 }
 
 inline int chain_edges_in_obj(const std::string& text)
