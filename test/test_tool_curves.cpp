@@ -145,23 +145,50 @@ TEST(ToolCurves, BadFilesGiveFileLineOrAWarning)
 // grid4.off: the square [0,3]^2 in z = 0, 3 x 3 unit squares split along (i,j)-(i+1,j+1), normals +z
 const std::string grid = "'" + std::string(SWN_TEST_DATA_DIR) + "/grid4.off'";
 
+// a run of the tool on grid4 with curves off the mesh, and its summary.json
+struct Grid_run
+{
+  fs::path dir;       // the test's directory (remove it at the end)
+  std::string file;   // the curves' file in it
+  Tool_run r;
+  std::string summary;
+  std::size_t at = std::string::npos;   // where "curves_off_mesh" is in the summary
+  bool ok() const { return r.status == 0 && at != std::string::npos; }
+};
+
+// writes `text` to the file `name` (.obj: --polylines, .svg: --stamp) in a fresh directory `dir_name`, runs
+// the tool on grid4 with it and an output directory, reads summary.json and finds "curves_off_mesh"
+Grid_run run_on_grid(const std::string& dir_name, const std::string& name, const std::string& text)
+{
+  Grid_run g;
+  g.dir = fresh_dir(dir_name);
+  fs::create_directories(g.dir);
+  g.file = (g.dir / name).string();
+  std::ofstream(g.file) << text;
+  const std::string option = name.size() > 4 && name.compare(name.size() - 4, 4, ".svg") == 0 ? " --stamp '" : " --polylines '";
+  g.r = run(grid + option + g.file + "' --output-dir '" + (g.dir / "out").string() + "'");
+  EXPECT_EQ(g.r.status, 0) << g.r.err;
+  if(g.r.status != 0) return g;
+  g.summary = slurp((g.dir / "out" / "summary.json").string());
+  g.at = g.summary.find("\"curves_off_mesh\"");
+  EXPECT_NE(g.at, std::string::npos) << g.summary;
+  return g;
+}
+
 TEST(ToolCurves, PolylinesReportTheLibrarysCountsOnConsoleAndInSummary)
 {
-  const fs::path dir = fresh_dir("report_polylines");
-  fs::create_directories(dir);
   // y = 0.25 from x = 0.5 to 2.5 crosses x = 1, the diagonal at 1.25, x = 2 and the diagonal at 2.25: four
   // vertices cut in, none near an edge's end; the third point, 5 above the grid, is off the surface
-  std::ofstream(dir / "stroke.obj") << "# a stroke\nv 0.5 0.25 0\nv 2.5 0.25 0\nv 2.5 0.25 5\n\nl 1 2 3\n";
-  const std::string file = (dir / "stroke.obj").string();
-  const Tool_run r = run(grid + " --polylines '" + file + "' --output-dir '" + (dir / "out").string() + "'");
-  ASSERT_EQ(r.status, 0) << r.err;
+  const Grid_run g = run_on_grid("report_polylines", "stroke.obj", "# a stroke\nv 0.5 0.25 0\nv 2.5 0.25 0\nv 2.5 0.25 5\n\nl 1 2 3\n");
+  ASSERT_TRUE(g.ok());
+  const Tool_run& r = g.r;
+  const std::string& file = g.file;
+  const std::string& summary = g.summary;
+  const std::size_t at = g.at;
   EXPECT_NE(r.out.find("polylines " + file + ": 1 polylines, 3 points (1 off the surface), 0 failed walks, 0 pieces along "
                        "the border dropped, 0 crossings: 1 curves; cut: 4 vertices added"), std::string::npos) << r.out;
   EXPECT_NE(r.err.find("warning: " + file + ":6: polyline 0: 1 of its 3 points are farther than the mean edge length"),
             std::string::npos) << "a stroke that loses points warns, with its `l` line: " << r.err;
-  const std::string summary = slurp((dir / "out" / "summary.json").string());
-  const std::size_t at = summary.find("\"curves_off_mesh\"");
-  ASSERT_NE(at, std::string::npos) << summary;
   EXPECT_EQ(json_number(summary, "points", at), 3);
   EXPECT_EQ(json_number(summary, "points_off_surface", at), 1);
   EXPECT_EQ(json_number(summary, "failed_walks", at), 0);
@@ -178,40 +205,29 @@ TEST(ToolCurves, PolylinesReportTheLibrarysCountsOnConsoleAndInSummary)
   // --verbose: the polyline's details on stderr
   const Tool_run v = run(grid + " --polylines '" + file + "' --verbose");
   EXPECT_NE(v.err.find("[swn] " + file + ":6: polyline 0: 1 of its 3 points"), std::string::npos) << v.err;
-  fs::remove_all(dir);
+  fs::remove_all(g.dir);
 }
 
 TEST(ToolCurves, StrokesCrossingInsideAFaceAreCutInOnceAndReported)
 {
-  const fs::path dir = fresh_dir("report_crossing");
-  fs::create_directories(dir);
   // y = 0.45 from x = 0.2 to 2.8 and x = 1.25 from y = 0.1 to 2.9 cross at (1.25, 0.45), strictly inside the
   // face of the square [1,2] x [0,1] above its diagonal, which both curves cross from edge to edge (curve
   // points are where the walks cross edges): one vertex where they cross, none refused
-  std::ofstream(dir / "cross.obj") << "v 0.2 0.45 0\nv 2.8 0.45 0\nv 1.25 0.1 0\nv 1.25 2.9 0\nl 1 2\nl 3 4\n";
-  const std::string file = (dir / "cross.obj").string();
-  const Tool_run r = run(grid + " --polylines '" + file + "' --output-dir '" + (dir / "out").string() + "'");
-  ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_NE(r.out.find("0 failed walks, 0 pieces along the border dropped, 1 crossings: 2 curves"), std::string::npos) << r.out;
-  const std::string summary = slurp((dir / "out" / "summary.json").string());
-  const std::size_t at = summary.find("\"curves_off_mesh\"");
-  ASSERT_NE(at, std::string::npos) << summary;
-  EXPECT_EQ(json_number(summary, "crossing_vertices", at), 1);
-  EXPECT_EQ(json_number(summary, "interior_endpoints"), 4);
-  fs::remove_all(dir);
+  const Grid_run g = run_on_grid("report_crossing", "cross.obj", "v 0.2 0.45 0\nv 2.8 0.45 0\nv 1.25 0.1 0\nv 1.25 2.9 0\nl 1 2\nl 3 4\n");
+  ASSERT_TRUE(g.ok());
+  EXPECT_NE(g.r.out.find("0 failed walks, 0 pieces along the border dropped, 1 crossings: 2 curves"), std::string::npos) << g.r.out;
+  EXPECT_EQ(json_number(g.summary, "crossing_vertices", g.at), 1);
+  EXPECT_EQ(json_number(g.summary, "interior_endpoints"), 4);
+  fs::remove_all(g.dir);
 }
 
 TEST(ToolCurves, StampReportsItsPolylinesAndSaysWhenTheDirectionSeesTheBack)
 {
-  const fs::path dir = fresh_dir("report_stamp");
-  fs::create_directories(dir);
-  std::ofstream(dir / "square.svg") << "<svg>\n<polygon points=\"0 0 10 0 10 10 0 10\"/>\n</svg>\n";
-  const std::string svg = "'" + (dir / "square.svg").string() + "'";
-  Tool_run r = run(grid + " --stamp " + svg + " --output-dir '" + (dir / "out").string() + "'");
-  ASSERT_EQ(r.status, 0) << r.err;
-  const std::string summary = slurp((dir / "out" / "summary.json").string());
-  const std::size_t at = summary.find("\"curves_off_mesh\"");
-  ASSERT_NE(at, std::string::npos) << summary;
+  const Grid_run g = run_on_grid("report_stamp", "square.svg", "<svg>\n<polygon points=\"0 0 10 0 10 10 0 10\"/>\n</svg>\n");
+  ASSERT_TRUE(g.ok());
+  const std::string svg = "'" + g.file + "'";
+  const std::string& summary = g.summary;
+  const std::size_t at = g.at;
   EXPECT_NE(summary.find("\"kind\": \"stamp\"", at), std::string::npos) << summary;
   EXPECT_EQ(json_number(summary, "polylines", at), 1);
   EXPECT_EQ(json_number(summary, "stamped_polylines", at), 1);
@@ -219,10 +235,10 @@ TEST(ToolCurves, StampReportsItsPolylinesAndSaysWhenTheDirectionSeesTheBack)
   EXPECT_EQ(json_number(summary, "curves", at), 1);
   EXPECT_EQ(json_number(summary, "cut_new_vertices"), json_number(summary, "cut_vertices", at));
   EXPECT_GT(json_number(summary, "cut_vertices", at), 0) << "the square's sides cross the grid's edges";
-  EXPECT_NE(r.out.find("stamp " + (dir / "square.svg").string() + ": 1 polylines stamped as 1,"), std::string::npos) << r.out;
+  EXPECT_NE(g.r.out.find("stamp " + g.file + ": 1 polylines stamped as 1,"), std::string::npos) << g.r.out;
 
   // the grid's faces look up (+z): stamped along +z every ray meets their back
-  r = run(grid + " --stamp " + svg + " --direction 0,0,1");
+  Tool_run r = run(grid + " --stamp " + svg + " --direction 0,0,1");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("square.svg: nothing stamped: along --direction 0,0,1 every ray misses the mesh or meets the back "
                        "of its faces"), std::string::npos) << r.err;
@@ -231,7 +247,7 @@ TEST(ToolCurves, StampReportsItsPolylinesAndSaysWhenTheDirectionSeesTheBack)
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("square.svg: the stamped drawing misses the mesh (along --direction 1,0,0 and the opposite"),
             std::string::npos) << r.err;
-  fs::remove_all(dir);
+  fs::remove_all(g.dir);
 }
 
 TEST(ToolCurves, MessagesNameTheRecordThatFails)
@@ -269,38 +285,32 @@ TEST(ToolCurves, MessagesNameTheRecordThatFails)
 
 TEST(ToolCurves, StrokesAlongTheBorderAreDroppedAndSaidSo)
 {
-  const fs::path dir = fresh_dir("border_strokes");
-  fs::create_directories(dir);
-  // only along the border of grid4: no curve left, and the error says why, at the stroke's `l` line
-  std::ofstream(dir / "along.obj") << "v 0 0 0\nv 3 0 0\nv 3 3 0\nl 1 2 3\n";
-  const Tool_run a = run(grid + " --polylines '" + (dir / "along.obj").string() + "' --output-dir '" + (dir / "a").string() + "'");
-  EXPECT_EQ(a.status, 2);
-  EXPECT_NE(a.err.find("swn: error: " + (dir / "along.obj").string() + ":4: no curve left on the surface: it runs along the "
-                       "border of the mesh (1 piece dropped)"), std::string::npos) << a.err;
-  EXPECT_EQ(a.err.find("cancels out"), std::string::npos) << a.err;
-  EXPECT_FALSE(fs::exists(dir / "a"));
   // along the border from (0,0) to (2,0), then inside to (2,2) and (0,2): the piece along the border is
   // counted, and the labels are those of the stroke without it
-  std::ofstream(dir / "part.obj") << "v 0 0 0\nv 2 0 0\nv 2 2 0\nv 0 2 0\nl 1 2 3 4\n";
-  std::ofstream(dir / "rest.obj") << "v 2 0 0\nv 2 2 0\nv 0 2 0\nl 1 2 3\n";
-  const std::string part = (dir / "part.obj").string();
-  const Tool_run p = run(grid + " --polylines '" + part + "' --output-dir '" + (dir / "part").string() + "'");
-  ASSERT_EQ(p.status, 0) << p.err;
-  EXPECT_NE(p.out.find("0 failed walks, 1 pieces along the border dropped, 0 crossings: 1 curves"), std::string::npos) << p.out;
-  EXPECT_NE(p.err.find("warning: " + part + ": 1 piece of curve along the border of the mesh dropped"), std::string::npos) << p.err;
-  const std::string summary = slurp((dir / "part" / "summary.json").string());
-  const std::size_t at = summary.find("\"curves_off_mesh\"");
-  ASSERT_NE(at, std::string::npos) << summary;
-  EXPECT_EQ(json_number(summary, "border_pieces", at), 1);
-  const Tool_run v = run(grid + " --polylines '" + part + "' --verbose");
-  EXPECT_NE(v.err.find("[swn] " + part + ":5: polyline 0: on the surface in 1 piece; 1 piece along the border of the mesh dropped"),
+  const Grid_run g = run_on_grid("border_part", "part.obj", "v 0 0 0\nv 2 0 0\nv 2 2 0\nv 0 2 0\nl 1 2 3 4\n");
+  ASSERT_TRUE(g.ok());
+  EXPECT_NE(g.r.out.find("0 failed walks, 1 pieces along the border dropped, 0 crossings: 1 curves"), std::string::npos) << g.r.out;
+  EXPECT_NE(g.r.err.find("warning: " + g.file + ": 1 piece of curve along the border of the mesh dropped"), std::string::npos) << g.r.err;
+  EXPECT_EQ(json_number(g.summary, "border_pieces", g.at), 1);
+  const Tool_run v = run(grid + " --polylines '" + g.file + "' --verbose");
+  EXPECT_NE(v.err.find("[swn] " + g.file + ":5: polyline 0: on the surface in 1 piece; 1 piece along the border of the mesh dropped"),
             std::string::npos) << v.err;
-  const Tool_run r = run(grid + " --quiet --polylines '" + (dir / "rest.obj").string() + "' --output-dir '" + (dir / "rest").string() + "'");
-  ASSERT_EQ(r.status, 0) << r.err;
-  const std::vector<int> labels = read_labels(dir / "part" / "labels.txt");
-  EXPECT_EQ(labels, read_labels(dir / "rest" / "labels.txt"));
+  const Grid_run rest = run_on_grid("border_rest", "rest.obj", "v 2 0 0\nv 2 2 0\nv 0 2 0\nl 1 2 3\n");
+  ASSERT_TRUE(rest.ok());
+  const std::vector<int> labels = read_labels(g.dir / "out" / "labels.txt");
+  EXPECT_EQ(labels, read_labels(rest.dir / "out" / "labels.txt"));
   EXPECT_EQ(histogram(labels).size(), 2u) << "the square [0,2]^2 is labelled";
-  fs::remove_all(dir);
+  // only along the border of grid4: no curve left, and the error says why, at the stroke's `l` line
+  const std::string along = (g.dir / "along.obj").string();
+  std::ofstream(along) << "v 0 0 0\nv 3 0 0\nv 3 3 0\nl 1 2 3\n";
+  const Tool_run a = run(grid + " --polylines '" + along + "' --output-dir '" + (g.dir / "a").string() + "'");
+  EXPECT_EQ(a.status, 2);
+  EXPECT_NE(a.err.find("swn: error: " + along + ":4: no curve left on the surface: it runs along the border of the mesh "
+                       "(1 piece dropped)"), std::string::npos) << a.err;
+  EXPECT_EQ(a.err.find("cancels out"), std::string::npos) << a.err;
+  EXPECT_FALSE(fs::exists(g.dir / "a"));
+  fs::remove_all(g.dir);
+  fs::remove_all(rest.dir);
 }
 
 // an n x n grid of the square [0, size]^2 in z = 0 (normals +z), as an OBJ file

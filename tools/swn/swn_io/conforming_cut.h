@@ -137,13 +137,17 @@ void refuse_curves_along_the_border(const CGAL::Surface_mesh<Point>& mesh, const
       h = forward ? mesh.next(h) : mesh.prev(h);
     }
   };
+  auto border_halfedge_into = [&](Vertex v) {
+    Halfedge_index in = Mesh::null_halfedge();
+    for(Halfedge_index h : CGAL::halfedges_around_target(v, mesh))
+      if(mesh.is_border(h)) in = h;
+    return in;
+  };
   for(std::size_t k = 0; k < ends.size(); ++k)
   {
     const Vertex a = ends[k][0], b = ends[k][1];
     if(a == Mesh::null_vertex() || b == Mesh::null_vertex() || !mesh.is_border(a) || !mesh.is_border(b)) continue;
-    Halfedge_index in = Mesh::null_halfedge();   // the border halfedge into a
-    for(Halfedge_index h : CGAL::halfedges_around_target(a, mesh))
-      if(mesh.is_border(h)) in = h;
+    const Halfedge_index in = border_halfedge_into(a);
     if(in == Mesh::null_halfedge()) continue;
     for(bool forward : {true, false})
     {
@@ -153,9 +157,7 @@ void refuse_curves_along_the_border(const CGAL::Surface_mesh<Point>& mesh, const
       bool ignored = false;
       Vertex from = a, to = b;
       if(std::size_t(a) >= input_vertices) from = walk(forward ? in : mesh.next(in), !forward, Mesh::null_vertex(), ignored);
-      Halfedge_index out = Mesh::null_halfedge();
-      for(Halfedge_index h : CGAL::halfedges_around_target(b, mesh))
-        if(mesh.is_border(h)) out = h;
+      const Halfedge_index out = border_halfedge_into(b);
       if(std::size_t(b) >= input_vertices) to = walk(forward ? mesh.next(out) : out, forward, Mesh::null_vertex(), ignored);
       throw Input_error(*where[k].first, where[k].second,
                         "the curve runs along the edge from vertex " + std::to_string((std::min)(std::size_t(from), std::size_t(to))) +
