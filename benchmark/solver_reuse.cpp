@@ -83,7 +83,7 @@ int sketch(int nu, int nv, int n)
     for(auto e : edges(m)) same = same && get(G, e) == get(fresh_G, e);
     std::cout << "stroke " << k << (ok ? " ok" : " failed") << ": jump Laplace " << r.time_jump_laplace << " s (update rank "
               << r.jump_laplacian_update_rank << "), Hodge " << r.time_hodge << " s, residual " << r.time_residual
-              << " s, second solve " << r.time_second_solve << " s, labels " << r.time_labels << " s, whole " << t
+              << " s, second solve " << r.time_second_solve << " s (warm " << r.residual_warm_started << "), labels " << r.time_labels << " s, whole " << t
               << " s; fresh solve " << t_fresh << " s, " << (same ? "same" : "DIFFERENT") << " labels and G\n";
     if(!same) return 1;
   }
@@ -118,7 +118,7 @@ int main(int argc, char** argv)
     const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const SWN::Solve_report& r = solver.report();
     std::cout << "solve " << k << (ok ? " ok" : " failed") << ", interior endpoints " << r.interior_endpoints
-              << ", jump Laplacian kept " << r.jump_laplacian_reused << " (update rank " << r.jump_laplacian_update_rank
+              << ", jump Laplacian kept " << r.jump_laplacian_reused << ", residual warm " << r.residual_warm_started << " (update rank " << r.jump_laplacian_update_rank
               << "): jump Laplace " << r.time_jump_laplace
               << " s, residual " << r.time_residual << " s, second solve " << r.time_second_solve << " s, whole " << t
               << " s\n";

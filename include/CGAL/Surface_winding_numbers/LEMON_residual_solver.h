@@ -9,6 +9,7 @@
 #include <CGAL/Surface_winding_numbers/internal/residual_flow/integer_network.h>
 #include <CGAL/Surface_winding_numbers/internal/residual_flow/multilevel.h>
 #include <CGAL/Surface_winding_numbers/internal/residual_flow/network_simplex.h>
+#include <CGAL/Surface_winding_numbers/internal/residual_flow/warm_start.h>
 
 #include <algorithm>
 #include <chrono>
@@ -152,7 +153,17 @@ private:
     std::vector<RF::Int> pi, x;
     // the multilevel solver's line searches and flow shares need 128-bit integers
     st.algorithm = RF::has_wide ? ctx_.options.algorithm : Options::NETWORK_SIMPLEX;
-    if(st.algorithm == Options::MULTILEVEL && !RF::multilevel(ctx_, ip.nodes, ip.arcs, ip.U, pi))
+    bool solved = false;
+    if(st.algorithm == Options::MULTILEVEL && ctx_.options.warm_start && warm_.matches(ip))
+    {
+      solved = st.warm_started = RF::warm_solve(ctx_, ip, warm_, pi, x);
+      if(solved) { st.certified = true; st.levels = 1; }
+      else if(std::ostream* log = ctx_.log())
+        *log << "[swn] LEMON multilevel: the warm start was not certified"
+             << (ctx_.error.empty() ? "" : " (" + ctx_.error + ")") << "; solving afresh\n";
+      ctx_.error.clear();
+    }
+    if(!solved && st.algorithm == Options::MULTILEVEL && !RF::multilevel(ctx_, ip.nodes, ip.arcs, ip.U, pi, &x))
     {
       if(std::ostream* log = ctx_.log())
         *log << "[swn] LEMON multilevel: " << ctx_.error << "; solving the whole problem by network simplex\n";
@@ -166,10 +177,15 @@ private:
         return ctx_.fail("LEMON residual solver: " + ctx_.error);
     }
     st.time_solve = RF::seconds_since(t_solve);
-    return RF::recover_sigma(P, ip, pi, ctx_, sigma);
+    warm_.clear();
+    if(!RF::recover_sigma(P, ip, pi, ctx_, sigma)) return false;
+    if(ctx_.options.warm_start && st.certified && x.size() == ip.arcs.size())
+      RF::keep_answer(warm_, ip, pi, std::move(x), st.capacity_exponent);
+    return true;
   }
 
   internal::residual_flow::Context ctx_;
+  internal::residual_flow::Warm_state warm_;   // the last answer (Options::warm_start)
 };
 
 } // namespace Surface_winding_numbers

@@ -38,6 +38,14 @@ struct LEMON_residual_solver_options
   double feasibility_tolerance = 1e-9;
   /// messages on the steps and their timings to `std::cerr`
   bool verbose = false;
+  /// `true`: a problem on the same graph as the last one solved (the same mesh, the same faces joined
+  /// by fixed arcs) starts from the last answer, as `MULTILEVEL`'s finest level does from the coarser
+  /// one: its jumps at the kinks of the cost and its flow are carried over, and only the finest level
+  /// is certified and repaired; if that is not certified within `max_refinements` bands, the problem
+  /// is solved afresh. The answer is an optimum of the new problem either way (where Eq. 11 has several
+  /// optima it may be another one than a fresh solve's). The solver then keeps the last answer (about
+  /// 40 bytes per face). Default `false`; `Surface_winding_numbers_solver` turns it on for its own solver.
+  bool warm_start = false;
 
   /// \name Multilevel parameters
   /// Running time only, never the optimum. Tests shrink them to run the hierarchy, the bands, the
@@ -101,6 +109,7 @@ struct LEMON_residual_solver_statistics
   int capacity_exponent = 0;           ///< weights are scaled by 2^capacity_exponent
   LEMON_residual_solver_options::Algorithm algorithm = LEMON_residual_solver_options::NETWORK_SIMPLEX;   ///< the algorithm whose result was used
   bool fallback = false;               ///< `MULTILEVEL` was not certified and `NETWORK_SIMPLEX` solved the whole problem
+  bool warm_started = false;           ///< `Options::warm_start`: the answer came from the last one, repaired on the finest level
   bool certified = false;              ///< the exact optimality certificate held (duality, or a balanced maximum flow)
   std::size_t levels = 0;              ///< `MULTILEVEL`: levels of the hierarchy (1: the problem itself)
   std::size_t refinements = 0;         ///< `MULTILEVEL`: bands re-solved around barriers on the finest level

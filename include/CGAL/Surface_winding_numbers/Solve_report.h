@@ -90,6 +90,9 @@ struct Solve_report
   bool hodge_projection = false;     ///< `true` when the harmonic part was projected (open curves)
   bool reduced_residual = false;     ///< the residual came from the reduced problem of Sec. 6
   bool lp_ran = false;               ///< the residual function (Eq. 11) was computed
+  /// `true` when the residual function started from the last solve's answer
+  /// (`Surface_winding_numbers_solver` with its default LEMON solver: `LEMON_residual_solver_options::warm_start`)
+  bool residual_warm_started = false;
   /// `true` when the jump Laplacian was not factorized for this curve: the solver's kept
   /// factorization of the mesh's 0-form Laplacian served, as it is (a curve without interior
   /// endpoints) or with a low-rank update for the interior endpoints (`jump_laplacian_update_rank`)

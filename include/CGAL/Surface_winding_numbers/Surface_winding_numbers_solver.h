@@ -94,6 +94,29 @@ typedef CHOLMOD_sparse_solver Default_sparse_solver;
 typedef Eigen_LDLT_sparse_solver Default_sparse_solver;
 #endif
 
+// The residual solver a Surface_winding_numbers_solver keeps between its solves: with LEMON, one that
+// starts each re-solve from the last answer (LEMON_residual_solver_options::warm_start).
+inline std::unique_ptr<Default_linear_program_traits> kept_residual_solver()
+{
+#if defined(CGAL_SWN_USE_LEMON)
+  LEMON_residual_solver::Options options;
+  options.warm_start = true;
+  return std::unique_ptr<Default_linear_program_traits>(new LEMON_residual_solver(options));
+#else
+  return std::unique_ptr<Default_linear_program_traits>(new Default_linear_program_traits());
+#endif
+}
+
+template <class LP>
+bool warm_started(const LP& lp)
+{
+#if defined(CGAL_SWN_USE_LEMON)
+  if constexpr(std::is_same<LP, LEMON_residual_solver>::value) return lp.statistics().warm_started;
+#endif
+  (void)lp;
+  return false;
+}
+
 // Runs `f` (which fills `rep`), and turns its exceptions into the report's error: Invalid_input is
 // bad input, anything else a failed solve. Returns rep.success.
 template <class F>
@@ -122,9 +145,12 @@ bool run_and_report(Solve_report& rep, F f)
 // verbose, use_reduced_residual, completed_homology_class, concurrency, keep_hodge_factorization,
 // filter_nonbounding_loops and lp_solver.
 // `anchor_face`: the table face of the named parameter label_anchor_face (npos: none), found by the caller.
+// `kept_lp`: the residual solver to use when lp_solver is not given (one kept by the caller between
+// solves); nullptr: a new one.
 template <class LA, class NamedParameters>
 Core_result solve_with_parameters(Winding_number_core<LA>& core, const std::vector<double>& chain,
-                                  const NamedParameters& np, Solve_report& rep, std::size_t anchor_face = npos)
+                                  const NamedParameters& np, Solve_report& rep, std::size_t anchor_face = npos,
+                                  Default_linear_program_traits* kept_lp = nullptr)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -141,6 +167,7 @@ Core_result solve_with_parameters(Winding_number_core<LA>& core, const std::vect
   options.anchor_face = anchor_face;
   if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, snp::lp_solver_t>::value)
   {
+    if(kept_lp) return core.solve(chain, options, *kept_lp, rep);
     Default_linear_program_traits lp;
     return core.solve(chain, options, lp, rep);
   }
@@ -224,6 +251,12 @@ solves (`Solve_report::jump_laplacian_reused`). For a curve with interior endpoi
 the kept factorization serves too, with a low-rank update for the endpoints and their neighbours
 (`Solve_report::jump_laplacian_update_rank`, at most 96; beyond that, or where taking the endpoints out
 splits a component, the jump Laplacian is factorized for that curve).
+The residual step (paper Eq. 11) of each solve after the first starts from the last solve's answer
+(with its default residual solver, `LEMON_residual_solver` with `Options::warm_start`;
+`Solve_report::residual_warm_started`): only what changed near the changed curve is repaired, and the
+answer is certified optimal as a fresh solve's is. Where Eq. 11 has several optima (ties, on very
+regular meshes) it may be another one than the free function's; pass `lp_solver(std::ref(s))` with a
+solver of your own to choose.
 
 The mesh must not be modified while the solver is in use.
 
@@ -327,7 +360,9 @@ public:
       check_maps(chain_map, label_map, np);
       std::vector<double> chain(core_->tables().ne, 0.);
       for(edge_descriptor e : edges(tm_)) chain[get(eim_, e)] = double(get(chain_map, e));
-      const internal::Core_result r = internal::solve_with_parameters(*core_, chain, np, rep, anchor_face(np));
+      if(!lp_) lp_ = internal::kept_residual_solver();
+      const internal::Core_result r = internal::solve_with_parameters(*core_, chain, np, rep, anchor_face(np), lp_.get());
+      rep.residual_warm_started = rep.lp_ran && internal::warm_started(*lp_);
       internal::Stopwatch clock;
       write_outputs(r, label_map, np);
       write_confidence(r, chain, np);
@@ -531,6 +566,7 @@ private:
   EIM eim_;
   FIM fim_;
   std::unique_ptr<internal::Winding_number_core<LA>> core_;
+  std::unique_ptr<internal::Default_linear_program_traits> lp_;   // kept between solves (warm starts)
   Solve_report report_;
 };
 

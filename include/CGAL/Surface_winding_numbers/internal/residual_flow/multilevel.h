@@ -18,6 +18,7 @@
 #include <CGAL/Surface_winding_numbers/internal/residual_flow/max_flow_certificate.h>
 #include <CGAL/Surface_winding_numbers/internal/residual_flow/network_simplex.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -78,23 +79,33 @@ inline bool certify_level(Context& ctx, std::vector<Level>& levels, std::size_t 
   }
 }
 
-// The multilevel solve of the integer problem (n nodes, arcs, penalty U): pi gets optimal
-// potentials. False (ctx.error set) if no certified optimum was found within max_refinements bands.
-inline bool multilevel(Context& ctx, std::size_t n, std::vector<Int_arc> arcs, Int U, std::vector<Int>& pi)
+// The maximum flow's capacities (up to 2 (U + w) per arc) and supplies (their sums at a node) must
+// fit in 63 bits; false (ctx.error set) if they may not.
+inline bool fits_certificate_range(Context& ctx, std::size_t n, const std::vector<Int_arc>& arcs, Int U)
 {
-  {
-    // the maximum flow's capacities (up to 2 (U + w) per arc) and supplies (their sums at a node)
-    // must fit in 63 bits
-    std::vector<std::size_t> degree(n, 0);
-    for(const Int_arc& e : arcs) { ++degree[e.L]; ++degree[e.R]; }
-    const std::size_t max_degree = n == 0 ? 0 : *std::max_element(degree.begin(), degree.end());
-    if(Wide(max_degree + 1) * (Wide(U) + Wide(U)) >= Wide((std::numeric_limits<Int>::max)()))
-      return ctx.fail("a node has too many arcs for the certificate's integer range");
-  }
+  std::vector<std::size_t> degree(n, 0);
+  for(const Int_arc& e : arcs) { ++degree[e.L]; ++degree[e.R]; }
+  const std::size_t max_degree = n == 0 ? 0 : *std::max_element(degree.begin(), degree.end());
+  if(Wide(max_degree + 1) * (Wide(U) + Wide(U)) >= Wide((std::numeric_limits<Int>::max)()))
+    return ctx.fail("a node has too many arcs for the certificate's integer range");
+  return true;
+}
+
+// The multilevel solve of the integer problem (n nodes, arcs, penalty U): pi gets optimal
+// potentials, and x (if given) the flow that certifies them. False (ctx.error set) if no certified
+// optimum was found within max_refinements bands.
+inline bool multilevel(Context& ctx, std::size_t n, std::vector<Int_arc> arcs, Int U, std::vector<Int>& pi,
+                       std::vector<Int>* x = nullptr)
+{
+  if(!fits_certificate_range(ctx, n, arcs, U)) return false;
   std::vector<Level> levels = build_hierarchy(n, std::move(arcs), ctx.options);
   ctx.stats.levels = levels.size();
   if(!solve_whole(ctx, levels.back().n, levels.back().arcs, U, pi, levels.back().x)) return false;
-  if(levels.size() == 1) return true;   // certified by the duality of network simplex
+  if(levels.size() == 1)   // certified by the duality of network simplex
+  {
+    if(x) x->swap(levels.back().x);
+    return true;
+  }
   normalize(levels.back(), pi);
   const std::vector<char> no_seed;
   const bool narrow = levels.front().n <= ctx.options.narrow_curve_band_nodes;
@@ -112,7 +123,12 @@ inline bool multilevel(Context& ctx, std::size_t n, std::vector<Int_arc> arcs, I
     // bands around the barriers on the finest level only (on the coarse levels they did not pay)
     if(certify_level(ctx, levels, l, U, pi, l == 0 ? ctx.options.max_refinements : 0))
     {
-      if(l == 0) { ctx.stats.certified = true; return true; }
+      if(l == 0)
+      {
+        ctx.stats.certified = true;
+        if(x) x->swap(levels[0].x);
+        return true;
+      }
     }
     else if(!ctx.error.empty()) return false;
   }
