@@ -4,6 +4,7 @@
 #ifndef CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_JUMP_LAPLACE_H
 #define CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_JUMP_LAPLACE_H
 
+#include <CGAL/Surface_winding_numbers/internal/column_solves.h>
 #include <CGAL/Surface_winding_numbers/internal/mesh_tables.h>
 #include <CGAL/assertions.h>
 
@@ -16,9 +17,11 @@
 #include <atomic>
 #include <cmath>
 #include <condition_variable>
+#include <deque>
 #include <exception>
 #include <functional>
 #include <limits>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <numeric>
@@ -123,137 +126,6 @@ inline std::vector<char> interior_endpoints(const Mesh_tables& m, const std::vec
   return endpoint;
 }
 
-// X = A^-1 B for the k columns of B (n x k, column-major; X is resized to n x k) with a factorized
-// `la`: one solve per column, or a single pass over the factorization for all of them when the traits
-// expose an Eigen solver (CGAL::Eigen_solver_traits; CHOLMOD's supernodal solve then works on blocks
-// of columns). X's memory is reused when it has the size already.
-template <class LA>
-bool solve_columns(LA& la, const std::vector<double>& B, std::size_t n, std::size_t k, std::vector<double>& X, long)
-{
-  typename LA::Vector b(static_cast<int>(n)), x(static_cast<int>(n));
-  X.resize(n * k);
-  for(std::size_t j = 0; j < k; ++j)
-  {
-    for(std::size_t i = 0; i < n; ++i) b[i] = B[j * n + i];
-    if(!la.linear_solver(b, x)) return false;
-    for(std::size_t i = 0; i < n; ++i) X[j * n + i] = x[i];
-  }
-  return true;
-}
-
-#ifdef CGAL_EIGEN3_ENABLED
-template <class LA>
-auto solve_columns(LA& la, const std::vector<double>& B, std::size_t n, std::size_t k, std::vector<double>& X, int)
-  -> decltype(la.solver().solve(Eigen::MatrixXd()), bool())
-{
-  X.resize(n * k);
-  const Eigen::Map<const Eigen::MatrixXd> b(B.data(), Eigen::Index(n), Eigen::Index(k));
-  Eigen::Map<Eigen::MatrixXd> x(X.data(), Eigen::Index(n), Eigen::Index(k));
-  x = la.solver().solve(b);   // evaluated into X, no temporary
-  return la.solver().info() == Eigen::Success;
-}
-#endif
-
-// The many-column solves of solve_vertex_laplace(): with a solver that offers them (the package's
-// CHOLMOD class), into a result and workspace kept from block to block; otherwise solve_columns().
-template <class LA, class = void>
-struct Has_workspace_solve : std::false_type {};
-template <class LA>
-struct Has_workspace_solve<LA, std::void_t<typename std::remove_reference_t<decltype(std::declval<LA&>().solver())>::Solve_workspace>>
-  : std::true_type {};
-
-template <class LA, bool = Has_workspace_solve<LA>::value>
-class Column_solver
-{
-public:
-  // X = A^-1 B for the k columns of B (n x k): a pointer to X, valid until the next call; nullptr on failure
-  const double* solve(LA& la, const std::vector<double>& B, std::size_t n, std::size_t k)
-  {
-    return solve_columns(la, B, n, k, X_, 0) ? X_.data() : nullptr;
-  }
-
-private:
-  std::vector<double> X_;
-};
-
-template <class LA>
-class Column_solver<LA, true>
-{
-public:
-  const double* solve(LA& la, const std::vector<double>& B, std::size_t n, std::size_t k)
-  {
-    return la.solver().solve_with_workspace(B.data(), n, k, ws_);
-  }
-
-private:
-  typename std::remove_reference_t<decltype(std::declval<LA&>().solver())>::Solve_workspace ws_;
-};
-
-// Work that a thread (the owner) shares with one that would otherwise wait for it (a helper): the
-// owner publishes a function that claims and does pieces of the work until none is left, does it
-// itself, and returns once every helper that joined is done; a helper joins if the work is published
-// before the owner says it has finished everything it could share. Used by the Hodge step's
-// many-column solve: the solving thread waits for the harmonic basis once it has solved for u.
-class Shared_work
-{
-public:
-  // owner: publishes `work`, does it, waits for the helpers; `work` must not throw
-  void run(const std::function<void()>& work)
-  {
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      work_ = &work;
-    }
-    changed_.notify_all();
-    work();
-    std::unique_lock<std::mutex> lock(mutex_);
-    work_ = nullptr;
-    changed_.wait(lock, [this] { return helpers_ == 0; });
-  }
-
-  // owner: nothing (more) will be published
-  void finish()
-  {
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      finished_ = true;
-    }
-    changed_.notify_all();
-  }
-
-  // helper: waits until work is published or finish() is called; does the work if it is published
-  void help()
-  {
-    std::unique_lock<std::mutex> lock(mutex_);
-    changed_.wait(lock, [this] { return work_ != nullptr || finished_; });
-    if(work_ == nullptr) return;
-    const std::function<void()>& work = *work_;
-    ++helpers_;
-    lock.unlock();
-    work();
-    lock.lock();
-    --helpers_;
-    lock.unlock();
-    changed_.notify_all();
-  }
-
-private:
-  std::mutex mutex_;
-  std::condition_variable changed_;
-  const std::function<void()>* work_ = nullptr;
-  std::size_t helpers_ = 0;
-  bool finished_ = false;
-};
-
-// Right-hand sides per solve of solve_vertex_laplace(). A many-column solve reads the factorization
-// once for all its columns, but each column's right side and solution are arrays of the system's size,
-// and on the virtual machines of the benchmark every first touch of a 4 KiB page costs about 10
-// microseconds (benchmark/RESULTS.md, Speed): 22 columns at once on 11,800 vertices touched 3,200
-// new pages in the Hodge step of a whole solve (0.043 s for the solve), in blocks of 8 1,100 (0.027-
-// 0.030 s), in blocks of two 400 (0.020 s). But measured alone with CHOLMOD, in blocks of 8 the
-// columns cost 1.0-1.4 times as much as all at once, in blocks of 1, 2 or 4 up to 3.5 times (47k and
-// 94k vertices), which larger meshes feel more than the page faults.
-constexpr std::size_t vertex_laplace_block = 8;
 
 // The unknowns of the jump Laplacian on V* = vertices minus `excluded`: dof[v] is v's unknown, npos at
 // excluded vertices, at vertices of no face and at one pinned vertex per connected component of V*
@@ -278,6 +150,9 @@ inline std::size_t number_jump_laplace_unknowns(const Mesh_tables& m, const std:
 // The largest update of exclude_by_update(): its |T| columns are solved in blocks of
 // vertex_laplace_block, which must cost less than the factorization they replace.
 constexpr std::size_t jump_laplacian_max_update_rank = 96;
+// memory for the columns of the inverse that the updates keep for the next ones (64 MB: 160 columns
+// on a 100k-face mesh, 16 on a 1M-face one); an update whose own columns do not fit keeps none
+constexpr std::size_t column_cache_bytes = std::size_t(64) << 20;
 
 // The jump Laplace system (paper Eqs. 6-8, 10) on V* = vertices minus interior endpoints. The
 // constant null space of every connected component of V* is removed exactly by pinning the
@@ -303,6 +178,7 @@ public:
     const std::size_t n = number_jump_laplace_unknowns(m, excluded, order, dof_);
     n_ = n;
     la_.reset(new LA());
+    cache_ = std::make_shared<Column_cache>();
     if(n == 0) return;
     // the side weights summed per edge first, so that every matrix entry is added once
     std::vector<double> edge_weight(m.ne, 0.), diagonal(n, 0.);
@@ -351,14 +227,23 @@ public:
       Vector b = jump_laplace_rhs(c);
       Vector x(static_cast<int>(n_));
       if(!la_->linear_solver(b, x)) throw Solver_failure("jump Laplace solve failed");
-      if(update_)   // A* x = b with A* = A + P M P^T: x = A^-1 (b - P M q), (I + Z_T M) q = (A^-1 b)_T
+      if(update_)   // A* x = b with A* = A + P M P^T: x = A^-1 b - Z M q, (I + Z_T M) q = (A^-1 b)_T
       {
         const std::vector<std::size_t>& T = update_->dofs;
         Eigen::VectorXd yT(Eigen::Index(T.size()));
         for(std::size_t i = 0; i < T.size(); ++i) yT[Eigen::Index(i)] = x[T[i]];
         const Eigen::VectorXd Mq = update_->M * update_->K.solve(yT);
-        for(std::size_t i = 0; i < T.size(); ++i) b[T[i]] -= Mq[Eigen::Index(i)];
-        if(!la_->linear_solver(b, x)) throw Solver_failure("jump Laplace solve failed");
+        for(std::size_t j = 0; j < update_->columns.size(); ++j)   // Z = A^-1 P kept by exclude_by_update()
+        {
+          const std::vector<double>& z = *update_->columns[j];
+          const double c = Mq[Eigen::Index(j)];
+          for(std::size_t i = 0; i < n_; ++i) x[i] -= c * z[i];
+        }
+        if(update_->columns.empty())   // too large to keep: x = A^-1 (b - P M q)
+        {
+          for(std::size_t i = 0; i < T.size(); ++i) b[T[i]] -= Mq[Eigen::Index(i)];
+          if(!la_->linear_solver(b, x)) throw Solver_failure("jump Laplace solve failed");
+        }
       }
       for(std::size_t v = 0; v < m.nv; ++v)
         if(dof_[v] != npos)
@@ -421,6 +306,8 @@ public:
   bool excludes(const std::vector<char>& excluded) const { return la_ != nullptr && excluded_ == excluded; }
   // |T| of exclude_by_update(), 0 if the system is factorized as it is
   std::size_t update_rank() const { return update_ ? update_->dofs.size() : 0; }
+  // columns of A^-1 kept for the next updates (shared by the copies of one factorization)
+  std::size_t cached_columns() const { return cache_->column.size(); }
 
   // Turns a copy of the factorized 0-form Laplacian (no vertex excluded) into the jump Laplacian of
   // V* = vertices minus `excluded` (paper Eq. 8) without a new factorization. With an identity row
@@ -430,7 +317,10 @@ public:
   // then x = A^-1 (b - P M q), where Z_T = P^T A^-1 P takes |T| solves here and every solve two.
   // Returns false, the system unchanged, when |T| > max_rank or when V* needs other pinned vertices
   // than A's (a component's pinned vertex excluded, or a component split by the excluded vertices).
-  bool exclude_by_update(const std::vector<char>& excluded, std::size_t max_rank = jump_laplacian_max_update_rank)
+  // The columns of A^-1 that the update needs are kept with it (one solve per solve_jump_laplace()
+  // instead of two) and for the next updates of copies of A, within `column_bytes`.
+  bool exclude_by_update(const std::vector<char>& excluded, std::size_t max_rank = jump_laplacian_max_update_rank,
+                         std::size_t column_bytes = column_cache_bytes)
   {
     CGAL_precondition(la_ != nullptr && !update_ && std::count(excluded_.begin(), excluded_.end(), char(1)) == 0);
     const Mesh_tables& m = *m_;
@@ -475,19 +365,22 @@ public:
     }
     for(std::size_t v = 0; v < m.nv; ++v)
       if(excluded[v]) update->M(Eigen::Index(local[dof_[v]]), Eigen::Index(local[dof_[v]])) += 1;
-    // Z_T, in blocks of columns
+    // Z_T from the columns Z = A^-1 P: kept (in the update, and in the cache of the factorization for
+    // the next updates) when they fit in column_cache_bytes, otherwise only solved block by block
     Eigen::MatrixXd ZT(t, t);
-    Column_solver<LA> solver;
-    std::vector<double> B;
-    for(std::size_t j0 = 0; j0 < T.size(); j0 += vertex_laplace_block)
+    if(T.size() * n_ * sizeof(double) <= column_bytes)
     {
-      const std::size_t kb = (std::min)(vertex_laplace_block, T.size() - j0);
-      B.assign(n_ * kb, 0.);
-      for(std::size_t j = 0; j < kb; ++j) B[j * n_ + T[j0 + j]] = 1;
-      const double* X = solver.solve(*la_, B, n_, kb);
-      if(X == nullptr) throw Solver_failure("jump Laplace solve failed");
-      for(std::size_t j = 0; j < kb; ++j)
-        for(std::size_t i = 0; i < T.size(); ++i) ZT(Eigen::Index(i), Eigen::Index(j0 + j)) = X[j * n_ + T[i]];
+      update->columns = columns_of_inverse(T, column_bytes);
+      for(std::size_t j = 0; j < T.size(); ++j)
+        for(std::size_t i = 0; i < T.size(); ++i) ZT(Eigen::Index(i), Eigen::Index(j)) = (*update->columns[j])[T[i]];
+    }
+    else
+    {
+      std::vector<std::size_t> all(T.size());
+      std::iota(all.begin(), all.end(), std::size_t(0));
+      solve_unit_columns(T, all, [&](std::size_t j, const double* z) {
+        for(std::size_t i = 0; i < T.size(); ++i) ZT(Eigen::Index(i), Eigen::Index(j)) = z[T[i]];
+      });
     }
     update->K.compute(Eigen::MatrixXd::Identity(t, t) + ZT * update->M);
     if(!(update->K.rcond() > 1e-12)) return false;   // A* singular or nearly: factorize V* anew
@@ -498,6 +391,56 @@ public:
   }
 
 private:
+  typedef std::shared_ptr<const std::vector<double>> Column;
+
+  // Solves A z = e_d for the unknowns d = T[j], j in `which`, in blocks of columns; calls f(j, z) for each.
+  template <class F>
+  void solve_unit_columns(const std::vector<std::size_t>& T, const std::vector<std::size_t>& which, F f) const
+  {
+    Column_solver<LA> solver;
+    std::vector<double> B;
+    for(std::size_t j0 = 0; j0 < which.size(); j0 += vertex_laplace_block)
+    {
+      const std::size_t kb = (std::min)(vertex_laplace_block, which.size() - j0);
+      B.assign(n_ * kb, 0.);
+      for(std::size_t j = 0; j < kb; ++j) B[j * n_ + T[which[j0 + j]]] = 1;
+      const double* X = solver.solve(*la_, B, n_, kb);
+      if(X == nullptr) throw Solver_failure("jump Laplace solve failed");
+      for(std::size_t j = 0; j < kb; ++j) f(which[j0 + j], X + j * n_);
+    }
+  }
+
+  // The columns A^-1 e_d of the unknowns d in T: those of the cache (the unknowns of the latest
+  // updates: a kept stroke's endpoints cost nothing the next time), the others solved in blocks and
+  // added to it. The cache holds at most column_cache_bytes; the oldest columns leave it first.
+  std::vector<Column> columns_of_inverse(const std::vector<std::size_t>& T, std::size_t column_bytes)
+  {
+    Column_cache& cache = *cache_;
+    std::vector<Column> z(T.size());
+    std::vector<std::size_t> missing;
+    for(std::size_t j = 0; j < T.size(); ++j)
+    {
+      const auto it = cache.column.find(T[j]);
+      if(it != cache.column.end()) z[j] = it->second;
+      else missing.push_back(j);
+    }
+    solve_unit_columns(T, missing, [&](std::size_t j, const double* x) {
+      z[j] = std::make_shared<const std::vector<double>>(x, x + n_);
+    });
+    const std::size_t room = column_bytes / (sizeof(double) * (std::max)(n_, std::size_t(1)));
+    for(std::size_t j : missing)
+    {
+      cache.column[T[j]] = z[j];
+      cache.age.push_back(T[j]);
+    }
+    while(cache.column.size() > room)   // the oldest first (a column used again is not renewed: cheap, and rare)
+    {
+      cache.column.erase(cache.age.front());
+      cache.age.pop_front();
+    }
+    return z;
+  }
+
   // columns j0 .. j0 + kb - 1 of solve_vertex_laplace() into x; b: nv zeros (kept so), B: scratch
   template <class Rhs>
   void solve_vertex_laplace_block(std::size_t j0, std::size_t kb, const Rhs& rhs, std::vector<double>& b,
@@ -540,10 +483,18 @@ private:
   struct Update
   {
     std::vector<std::size_t> dofs;
+    std::vector<Column> columns;   // A^-1 e_d for d in dofs
     Eigen::MatrixXd M;
     Eigen::PartialPivLU<Eigen::MatrixXd> K;
   };
   std::shared_ptr<const Update> update_;
+  // the columns of A^-1 solved by the updates of the copies of this factorization (shared with them)
+  struct Column_cache
+  {
+    std::map<std::size_t, Column> column;
+    std::deque<std::size_t> age;   // unknowns in the order their columns came
+  };
+  std::shared_ptr<Column_cache> cache_ = std::make_shared<Column_cache>();
 };
 
 } // namespace internal
