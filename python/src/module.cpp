@@ -224,7 +224,7 @@ py::dict report_dict(const CGAL::Surface_winding_numbers::Solve_report& r)
   SWN_REPORT(nonmanifold_vertices) SWN_REPORT(nonmanifold_edges) SWN_REPORT(nonorientable_edges)
   SWN_REPORT(curve_edges) SWN_REPORT(interior_endpoints) SWN_REPORT(dropped_curve_edges) SWN_REPORT(inconsistent_curve_vertices)
   SWN_REPORT(homology_correction) SWN_REPORT(hodge_projection) SWN_REPORT(reduced_residual) SWN_REPORT(lp_ran)
-  SWN_REPORT(jump_laplacian_reused) SWN_REPORT(jump_laplacian_update_rank) SWN_REPORT(lp_variables) SWN_REPORT(lp_rows) SWN_REPORT(lp_objective)
+  SWN_REPORT(jump_laplacian_reused) SWN_REPORT(jump_laplacian_update_rank) SWN_REPORT(residual_warm_started) SWN_REPORT(lp_variables) SWN_REPORT(lp_rows) SWN_REPORT(lp_objective)
   SWN_REPORT(degenerate_weights) SWN_REPORT(min_label) SWN_REPORT(max_label) SWN_REPORT(nonbounding_closing_units)
 #undef SWN_REPORT
 #define SWN_TIME(F) times[#F] = r.time_##F;

@@ -69,7 +69,7 @@ public:
     const auto fi = get(boost::face_index, mesh_);
     auto edge_map = [&](auto& v) { return boost::make_iterator_property_map(v.begin(), ei); };
     const Mesh::Face_index anchor = o.anchor_face < 0 ? Mesh::null_face() : Mesh::Face_index(Mesh::size_type(o.anchor_face));
-    return IO::with_lp_solver(o.lp_solver, [&](auto& lp) {
+    const auto run = [&](auto& lp) {
       const auto np =
         SWN::parameters::nonbounding_chain_map(edge_map(out.G),
         SWN::parameters::nonbounding_chain_real_map(edge_map(out.g),
@@ -92,12 +92,26 @@ public:
                            SWN::parameters::confidence_map(boost::make_iterator_property_map(out.face_cost.begin(), fi),
                            SWN::parameters::region_map(boost::make_iterator_property_map(out.region.begin(), fi),
                            SWN::parameters::second_best_label_map(boost::make_iterator_property_map(out.second_best.begin(), fi), np)))));
-    });
+    };
+#ifdef CGAL_SWN_USE_LEMON
+    // the default residual solver is kept between solves: each re-solve starts from the last answer
+    if(o.lp_solver == "lemon") return run(lemon_);
+#endif
+    return IO::with_lp_solver(o.lp_solver, run);
   }
 
 private:
   const Mesh& mesh_;
   SWN::Surface_winding_numbers_solver<Mesh, SparseSolver> solver_;
+#ifdef CGAL_SWN_USE_LEMON
+  SWN::LEMON_residual_solver lemon_{warm_start_options()};
+  static SWN::LEMON_residual_solver::Options warm_start_options()
+  {
+    SWN::LEMON_residual_solver::Options options;
+    options.warm_start = true;
+    return options;
+  }
+#endif
 };
 
 // the library's solver on `mesh` with the sparse solver `name` (runs without the GIL)

@@ -152,6 +152,29 @@ def test_solver_reuse_matches_fresh_solves():
             assert np.allclose(res.g, fresh.g, atol=1e-8) and np.allclose(res.w, fresh.w, equal_nan=True, atol=1e-8)
 
 
+def test_sketching_resolves_start_from_the_last_answer():
+    # the paper's sketching use: a broken meridian kept, a broken square stroke moved step by step; each
+    # re-solve starts the residual from the last answer (the solver's kept residual solver) and gives
+    # the labels and G of a fresh solve
+    nu, nv = 30, 12
+    V, F, idx = torus(nu, nv)
+    meridian = [idx(3, j) for j in range(nv + 1)]
+    solver = swn.Solver(V, F)
+    warm = 0
+    for step in range(5):
+        square = torus_rectangle_loop(idx, 10 + step, 15 + step, 2, 6)[1:]   # a gap of one edge
+        curves = [meridian[:5], meridian[7:], square]
+        r = solver.solve(curves)
+        if step == 0:
+            assert not r.report["residual_warm_started"]
+        warm += r.report["residual_warm_started"]
+        fresh = swn.winding_numbers(V, F, curves)
+        assert not fresh.report["residual_warm_started"]
+        assert (r.W == fresh.W).all() and (r.G == fresh.G).all()
+        assert (r.G != 0).sum() >= nv   # the completed meridian
+    assert warm >= 3
+
+
 def test_reduced_residual_and_epsilon():
     nu, nv = 24, 12
     V, F, idx = torus(nu, nv)

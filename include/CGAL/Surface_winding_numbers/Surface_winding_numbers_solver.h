@@ -165,14 +165,19 @@ Core_result solve_with_parameters(Winding_number_core<LA>& core, const std::vect
   options.keep_hodge_factorization = choose_parameter(get_parameter(np, snp::keep_hodge_factorization), true);
   options.filter_nonbounding = choose_parameter(get_parameter(np, snp::filter_nonbounding_loops), true);
   options.anchor_face = anchor_face;
+  const auto run = [&](auto& lp) {
+    Core_result r = core.solve(chain, options, lp, rep);
+    rep.residual_warm_started = rep.lp_ran && warm_started(lp);
+    return r;
+  };
   if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, snp::lp_solver_t>::value)
   {
-    if(kept_lp) return core.solve(chain, options, *kept_lp, rep);
+    if(kept_lp) return run(*kept_lp);
     Default_linear_program_traits lp;
-    return core.solve(chain, options, lp, rep);
+    return run(lp);
   }
   else
-    return core.solve(chain, options, get_parameter_reference(np, snp::lp_solver), rep);
+    return run(get_parameter_reference(np, snp::lp_solver));
 }
 
 // The confidence outputs (label_confidence, confidence_map, region_map, second_best_label_map), computed only
@@ -362,7 +367,6 @@ public:
       for(edge_descriptor e : edges(tm_)) chain[get(eim_, e)] = double(get(chain_map, e));
       if(!lp_) lp_ = internal::kept_residual_solver();
       const internal::Core_result r = internal::solve_with_parameters(*core_, chain, np, rep, anchor_face(np), lp_.get());
-      rep.residual_warm_started = rep.lp_ran && internal::warm_started(*lp_);
       internal::Stopwatch clock;
       write_outputs(r, label_map, np);
       write_confidence(r, chain, np);
