@@ -451,7 +451,8 @@ public:
     rep.genus = 0;
     rep.border_loops = 0;
     rep.euler_characteristic = 0;
-    const std::vector<char> orientable = component_orientable(m_);
+    if(orientable_.empty()) orientable_ = component_orientable(m_);   // once per mesh: a search over its faces
+    const std::vector<char>& orientable = orientable_;
     rep.orientable = std::find(orientable.begin(), orientable.end(), char(0)) == orientable.end();
     // the genus is defined on orientable 2-manifolds only (with or without border)
     std::vector<char> manifold(m_.n_components, 1);
@@ -512,6 +513,7 @@ private:
   // keep_hodge_factorization is false
   std::shared_ptr<Jump_laplace_system<LA>> laplacian_;
   mutable std::vector<std::size_t> border_loops_;
+  mutable std::vector<char> orientable_;   // component -> orientable (fill_mesh_report())
   mutable std::vector<std::size_t> vertex_order_;   // elimination order of the jump Laplacian (empty: by vertex)
   mutable bool vertex_order_computed_ = false;
 };
