@@ -87,6 +87,9 @@ py::dict put_on_mesh(Mesh& mesh, const Polylines_3& polylines, std::optional<dou
   for(Mesh::Edge_index e : mesh.edges()) values[std::size_t(e)] = chain[e];
   mesh.remove_property_map(chain);
   const py::tuple curve = chain_halfedges(mesh, values);
+  if(py::len(curve[1]) == 0 && r.border_pieces > 0)
+    throw py::value_error("no curve left on the surface: it runs along the border of the mesh (" +
+                          std::to_string(r.border_pieces) + " pieces dropped); curves may end on the border, not run along it");
   if(py::len(curve[1]) == 0)
     throw py::value_error("no curve on the surface (every point is too far from it, or every ray misses it)");
   std::vector<std::int64_t> face_origin(mesh.number_of_faces());
@@ -97,7 +100,7 @@ py::dict put_on_mesh(Mesh& mesh, const Polylines_3& polylines, std::optional<dou
     {"cut_faces", r.cut.cut_faces}, {"refinement_vertices", r.cut.refinement_vertices},
     {"refinement_faces", r.cut.refinement_faces}, {"refined_pieces", r.cut.refined_pieces}, {"points", r.points},
     {"points_off_surface", r.points_off_surface}, {"failed_walks", r.failed_walks},
-    {"crossing_vertices", r.cut.crossing_vertices}, {"curves", r.curves}};
+    {"crossing_vertices", r.cut.crossing_vertices}, {"curves", r.curves}, {"border_pieces", r.border_pieces}};
   for(const auto& [key, value] : counts) info[key] = value;
   info["pieces"] = r.pieces;
   py::list warnings = info.contains("warnings") ? py::list(info["warnings"]) : py::list();

@@ -434,8 +434,9 @@ def polylines_to_chain(V, F, polylines, *, projection_tolerance=None, refine_sho
     is cut so that the curves run along edges (``refine_short_pieces``, ``minimum_piece_edges`` as for
     ``read_curve()``). Returns a ``CurveOnMesh``: the cut mesh, the curves' halfedges and multiplicities,
     ``face_origin`` (the input face of every face) and ``info`` (``points``, ``points_off_surface``,
-    ``failed_walks``, ``crossing_vertices``, ``curves``, ``pieces``, the cut's counts, ``warnings``).
-    Raises ``ValueError`` on a bad mesh or polyline and when no curve lands on the surface.
+    ``failed_walks``, ``crossing_vertices``, ``curves``, ``pieces``, ``border_pieces``: the pieces that ran along
+    the border of the mesh, dropped, the cut's counts, ``warnings``). Raises ``ValueError`` on a bad mesh or
+    polyline and when no curve lands on the surface (saying so when it all ran along the border).
     """
     settings = _cut_settings(projection_tolerance, refine_short_pieces, minimum_piece_edges)
     return _curve_on_mesh(_swn._polylines_to_chain(V, F, polylines, *settings))

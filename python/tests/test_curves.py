@@ -47,6 +47,20 @@ def test_stamped_square_in_a_given_frame_has_its_area():
     assert inside_area(p, 1) == pytest.approx(AREA, abs=1e-12)
 
 
+def test_pieces_along_the_border_are_dropped_and_counted():
+    V, F = grid_disk(4)
+    # along the bottom border only: nothing is left, and the error says why
+    with pytest.raises(ValueError, match="along the border"):
+        swn.polylines_to_chain(V, F, [np.array([[0.0, 0, 0], [0.5, 0, 0], [1.0, 0, 0]])])
+    # from the border across the grid and back along the border: the border piece is dropped and counted
+    stroke = np.array([[0.5, 0, 0], [0.5, 0.5, 0], [1.0, 0.5, 0], [1.0, 0.0, 0], [0.75, 0.0, 0]])
+    p = swn.polylines_to_chain(V, F, [stroke])
+    assert p.info["border_pieces"] == 1 and p.info["curves"] == 1
+    q = swn.polylines_to_chain(V, F, [stroke[:3]])   # the same stroke without its border piece
+    assert q.info["border_pieces"] == 0
+    assert sorted(map(tuple, p.halfedges.tolist())) == sorted(map(tuple, q.halfedges.tolist()))
+
+
 def test_stamped_svg_in_the_fitted_frame(tmp_path):
     V, F = grid_disk(10)
     # SQUARE in SVG coordinates (y downwards), 6 x 6 units: looking down -z, SVG x is +x and SVG y is -y, and
