@@ -44,7 +44,7 @@ struct LEMON_residual_solver_options
   /// is certified and repaired; if that is not certified within `max_refinements` bands, the problem
   /// is solved afresh. The answer is an optimum of the new problem either way (where Eq. 11 has several
   /// optima it may be another one than a fresh solve's). The solver then keeps the last answer (about
-  /// 40 bytes per face). Default `false`; `Surface_winding_numbers_solver` turns it on for its own solver.
+  /// 70 bytes per face). Default `false`; `Surface_winding_numbers_solver` turns it on for its own solver.
   bool warm_start = false;
 
   /// \name Multilevel parameters
