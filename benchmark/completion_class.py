@@ -10,7 +10,7 @@ over the interior edges off the curve),
 and prints per case: the completion's edges, the endpoints left open, the edges of the deleted runs, the edges
 where the completed input differs from the full truth (J W_gt + planted loops), and whether the two are
 homologous (their difference is J F for an integer face function F). Where they are, the named parameter
-completed_homology_class gives the residual problem the planted class (benchmark/RESULTS.md, "Beyond Eq. 11").
+completed_homology_class gives the residual problem the planted class (benchmark/beyond_eq11.md).
 Pure Python (no numpy); about a second per 30k-face case.
 """
 import heapq

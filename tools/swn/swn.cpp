@@ -78,7 +78,7 @@ static const char* usage =
   "                         closed by shortest paths, one shift per region (faster, approximate)\n"
 "  --completed-class      for broken curves, Eq. 11 integrates the 1-form of the curve with its gaps\n"
 "                         closed by shortest paths, not the broken curve's harmonic part (not the\n"
-"                         paper's method; benchmark/RESULTS.md, \"Beyond Eq. 11\")\n"
+"                         paper's method; benchmark/beyond_eq11.md)\n"
   "  --no-nonbounding-filter  label by rounding the jump-harmonic function u itself (paper Fig. 27): loops\n"
   "                         around handles are completed by contours of u instead of being filtered out\n"
   "  --anchor-face N        face N of the mesh file (1-based, the file's face order: line N of a per-face\n"
