@@ -80,16 +80,14 @@ inline std::vector<Int> warm_potentials(const Warm_state& w, const Integer_probl
 {
   const std::size_t n = ip.nodes;
   const double scale = std::ldexp(1., ip.k);
-  std::vector<Int> target(ip.arcs.size(), 0);
-  auto carried = [&](std::size_t i) {
-    if(std::isnan(w.kink[i])) return false;
-    const Int_arc& e = ip.arcs[i];
-    const Int J = Int(std::llround(w.kink[i] * scale));
-    target[i] = J;
-    return at_kink(e, J);
-  };
+  std::vector<Int> target(ip.arcs.size(), 0);   // the jump carried over, on the arcs with use[i]
   std::vector<char> use(ip.arcs.size(), 0);
-  for(std::size_t i = 0; i < ip.arcs.size(); ++i) use[i] = carried(i) ? 1 : 0;
+  for(std::size_t i = 0; i < ip.arcs.size(); ++i)
+    if(!std::isnan(w.kink[i]))
+    {
+      target[i] = Int(std::llround(w.kink[i] * scale));
+      use[i] = at_kink(ip.arcs[i], target[i]) ? 1 : 0;
+    }
   const Adjacency adj(n, ip.arcs);
   std::vector<Int> pi(n, 0);
   std::vector<char> seen(n, 0);
