@@ -69,7 +69,8 @@ public:
     const auto fi = get(boost::face_index, mesh_);
     auto edge_map = [&](auto& v) { return boost::make_iterator_property_map(v.begin(), ei); };
     const Mesh::Face_index anchor = o.anchor_face < 0 ? Mesh::null_face() : Mesh::Face_index(Mesh::size_type(o.anchor_face));
-    const auto run = [&](auto& lp) {
+    // tail: the innermost named parameters (the report, and the residual solver when not the default)
+    const auto run = [&](const auto& tail) {
       const auto np =
         SWN::parameters::nonbounding_chain_map(edge_map(out.G),
         SWN::parameters::nonbounding_chain_real_map(edge_map(out.g),
@@ -81,9 +82,7 @@ public:
         SWN::parameters::filter_nonbounding_loops(o.filter_nonbounding_loops,
         SWN::parameters::label_anchor_face(anchor,
         SWN::parameters::concurrency(o.concurrency,
-        SWN::parameters::keep_hodge_factorization(keep,
-        SWN::parameters::lp_solver(std::ref(lp),
-        SWN::parameters::report(std::ref(out.report)))))))))))))).verbose(o.verbose);
+        SWN::parameters::keep_hodge_factorization(keep, tail))))))))))).verbose(o.verbose);
       const auto labels = boost::make_iterator_property_map(out.labels.begin(), fi);
       if(!o.confidence) return solver_.solve(boost::make_iterator_property_map(chain.begin(), ei), labels, np);
       // the confidence outputs (computed only when asked: a second instantiation of the solve)
@@ -93,25 +92,17 @@ public:
                            SWN::parameters::region_map(boost::make_iterator_property_map(out.region.begin(), fi),
                            SWN::parameters::second_best_label_map(boost::make_iterator_property_map(out.second_best.begin(), fi), np)))));
     };
+    const auto report = SWN::parameters::report(std::ref(out.report));
 #ifdef CGAL_SWN_USE_LEMON
-    // the default residual solver is kept between solves: each re-solve starts from the last answer
-    if(o.lp_solver == "lemon") return run(lemon_);
+    // the default residual solver: the one the solver keeps between solves (each re-solve starts from the last answer)
+    if(o.lp_solver == "lemon") return run(report);
 #endif
-    return IO::with_lp_solver(o.lp_solver, run);
+    return IO::with_lp_solver(o.lp_solver, [&](auto& lp) { return run(SWN::parameters::lp_solver(std::ref(lp), report)); });
   }
 
 private:
   const Mesh& mesh_;
   SWN::Surface_winding_numbers_solver<Mesh, SparseSolver> solver_;
-#ifdef CGAL_SWN_USE_LEMON
-  SWN::LEMON_residual_solver lemon_{warm_start_options()};
-  static SWN::LEMON_residual_solver::Options warm_start_options()
-  {
-    SWN::LEMON_residual_solver::Options options;
-    options.warm_start = true;
-    return options;
-  }
-#endif
 };
 
 // the library's solver on `mesh` with the sparse solver `name` (runs without the GIL)
