@@ -35,6 +35,20 @@ double write_sphere(const fs::path& path)
   return area;
 }
 
+// the vertices (16, lines 1-16) and faces (18, lines 17-34) of grid4.off as OBJ records: the square [0,3]^2,
+// vertex i at (i % 4, i / 4, 0), two triangles per cell
+void write_grid4_obj(std::ostream& obj)
+{
+  for(int j = 0; j < 4; ++j)
+    for(int i = 0; i < 4; ++i) obj << "v " << i << " " << j << " 0\n";
+  for(int j = 0; j < 3; ++j)
+    for(int i = 0; i < 3; ++i)
+    {
+      const int a = 4 * j + i + 1;
+      obj << "f " << a << " " << a + 1 << " " << a + 5 << "\nf " << a << " " << a + 5 << " " << a + 4 << "\n";
+    }
+}
+
 // label -> area, from summary.json
 std::map<int, double> label_areas(const std::string& summary)
 {
@@ -266,14 +280,7 @@ TEST(ToolCurves, MessagesNameTheRecordThatFails)
   }
   // an OBJ mesh whose `l` record leaves the faces (points above the grid, on no face): a hint at --polylines
   std::ofstream obj(dir / "mesh_and_stroke.obj");
-  for(int j = 0; j < 4; ++j)
-    for(int i = 0; i < 4; ++i) obj << "v " << i << " " << j << " 0\n";
-  for(int j = 0; j < 3; ++j)
-    for(int i = 0; i < 3; ++i)
-    {
-      const int a = 4 * j + i + 1;
-      obj << "f " << a << " " << a + 1 << " " << a + 5 << "\nf " << a << " " << a + 5 << " " << a + 4 << "\n";
-    }
+  write_grid4_obj(obj);
   obj << "v 0.2 0.2 0.1\nv 2.7 0.3 0.1\nv 1.5 2.8 0.1\nl 17 18 19 17\n";
   obj.close();
   r = run("'" + (dir / "mesh_and_stroke.obj").string() + "'");
@@ -387,14 +394,7 @@ TEST(ToolCurves, CurveAlongTheBorderOfATriangleMeshIsBlamedAtItsLine)
   EXPECT_NEAR(areas.at(1), 1., 1e-12);
   // the `l` records of an OBJ mesh along its border: the mesh file and the record's line
   std::ofstream obj(dir / "mesh_with_border_curve.obj");
-  for(int j = 0; j < 4; ++j)
-    for(int i = 0; i < 4; ++i) obj << "v " << i << " " << j << " 0\n";
-  for(int j = 0; j < 3; ++j)
-    for(int i = 0; i < 3; ++i)
-    {
-      const int a = 4 * j + i + 1;
-      obj << "f " << a << " " << a + 1 << " " << a + 5 << "\nf " << a << " " << a + 5 << " " << a + 4 << "\n";
-    }
+  write_grid4_obj(obj);
   obj << "l 6 7 11 10 6\nl 16 12\n";   // a loop inside (line 35), then along the right border (line 36)
   obj.close();
   const Tool_run r = run("'" + (dir / "mesh_with_border_curve.obj").string() + "' --output-dir '" + (dir / "obj").string() + "'");
