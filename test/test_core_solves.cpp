@@ -49,6 +49,21 @@ TEST(JumpLaplace, ReducedCoordinatesRealiseTheJumps)
       if(endpoint[v]) continue;
       EXPECT_NEAR(SI::corner_jump_at(t, c, a, k), chain[t.arcs[a].edge], 1e-14);
     }
+  // off the curves, where no jump is measured, every corner keeps c = 0; the defect is |dGamma|: 1 at
+  // the path's two ends, 0 elsewhere (the loop's crossing with the path included)
+  std::vector<char> on_curve(t.nv, 0);
+  for(std::size_t e = 0; e < t.ne; ++e)
+    if(chain[e] != 0) on_curve[t.ev[2 * e]] = on_curve[t.ev[2 * e + 1]] = 1;
+  std::size_t off = 0;
+  for(std::size_t k = 0; k < 3 * t.nf; ++k)
+    if(!on_curve[t.fv[k]]) { ++off; EXPECT_EQ(c[k], 0.) << "corner " << k; }
+  EXPECT_GT(off, t.nf);
+  std::vector<double> defect;
+  const std::vector<double> c_all = SI::reduced_coordinates(t, jumps, std::vector<char>(t.nv, 0), &defect);
+  ASSERT_EQ(defect.size(), t.nv);
+  for(std::size_t v = 0; v < t.nv; ++v) EXPECT_NEAR(defect[v], endpoint[v] ? 1. : 0., 1e-14) << "vertex " << v;
+  for(std::size_t k = 0; k < 3 * t.nf; ++k)
+    if(!endpoint[t.fv[k]]) EXPECT_EQ(c_all[k], c[k]) << "corner " << k;
 }
 
 TEST(JumpLaplace, ClosedLoopGivesTwoValuedFunctionAndExactJumps)

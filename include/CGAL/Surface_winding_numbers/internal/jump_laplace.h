@@ -61,20 +61,24 @@ inline std::vector<double> arc_jumps_from_chain(const Mesh_tables& m, const std:
 // Reduced coordinates c (paper Eq. 3): per-corner offsets that realise the prescribed jumps around
 // every vertex. Corners of a vertex are visited across arcs from a root corner with c = 0; the
 // root choice only shifts u0 at that vertex. Excluded vertices (interior endpoints) and nonmanifold
-// vertices keep c = 0. With `defect`, each vertex also gets the largest amount by which the jumps
-// around it fail to close (|dGamma| at that vertex on an oriented surface; on a nonorientable one
-// the only way to tell the endpoints, since a dual chain has no global boundary).
+// vertices keep c = 0, and so do the vertices where no jump is measured (away from the curves: the
+// visit would give 0 at each of their corners). With `defect`, each vertex also gets the largest
+// amount by which the jumps around it fail to close (|dGamma| at that vertex on an oriented surface;
+// on a nonorientable one the only way to tell the endpoints, since a dual chain has no global boundary).
 inline std::vector<double> reduced_coordinates(const Mesh_tables& m, const std::vector<double>& arc_jump,
                                                const std::vector<char>& excluded,
                                                std::vector<double>* defect = nullptr)
 {
   std::vector<double> c(3 * m.nf, 0.);
-  std::vector<char> done(3 * m.nf, 0);
+  std::vector<char> done(3 * m.nf, 0), jumps(m.nv, 0);
+  for(std::size_t a = 0; a < m.arcs.size(); ++a)
+    for(std::size_t k = 0; k < 2; ++k)
+      if(arc_jump[2 * a + k] != 0) jumps[m.ev[2 * m.arcs[a].edge + k]] = 1;
   std::vector<std::size_t> stack;
   if(defect) defect->assign(m.nv, 0.);
   for(std::size_t v = 0; v < m.nv; ++v)
   {
-    if(excluded[v] || m.is_nonmanifold(v)) continue;
+    if(!jumps[v] || excluded[v] || m.is_nonmanifold(v)) continue;
     for(std::size_t i = m.vertex_corner_begin[v]; i < m.vertex_corner_begin[v + 1]; ++i)
     {
       const std::size_t root = m.vertex_corners[i];
