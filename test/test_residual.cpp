@@ -36,7 +36,7 @@ TEST(LemonResidual, NameAndDefaults)
   EXPECT_EQ(l.options().cluster_size, 16u);
   EXPECT_EQ(l.options().max_refinements, 16u);
   EXPECT_EQ(l.options().max_flow_budget, 200.);
-  EXPECT_EQ(l.options().narrow_curve_band_nodes, 1000000u);
+  EXPECT_EQ(l.options().narrow_curve_band_nodes, (std::numeric_limits<std::size_t>::max)());
   EXPECT_EQ(l.options().split_band_nodes, 5000u);
   EXPECT_EQ(l.options().carried_flow_routing_nodes, 100000u);
   Options o;

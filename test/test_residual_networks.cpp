@@ -379,7 +379,7 @@ TEST(LemonResidual, MultilevelParametersChangeTheTimeNotTheOptimum)
   std::size_t refined = 0, descended = 0, narrower = 0, wide_band = 0, split = 0, routed = 0;
   for(const Setting& s : settings)
     for(std::size_t descent : {std::size_t(0), std::size_t(30)})
-      for(std::size_t narrow : {std::size_t(0), std::size_t(1000000)})   // off, on (the default)
+      for(std::size_t narrow : {std::size_t(0), std::size_t(1000000)})   // off, on
         for(std::size_t halves : {std::size_t(0), std::size_t(40)})        // first bands in halves: never, from 40 nodes
     {
       const std::string what = "coarsest " + std::to_string(s.coarsest) + ", clusters of " + std::to_string(s.cluster) +

@@ -5,6 +5,7 @@
 #define CGAL_SURFACE_WINDING_NUMBERS_LEMON_RESIDUAL_SOLVER_OPTIONS_H
 
 #include <cstddef>
+#include <limits>
 
 namespace CGAL {
 namespace Surface_winding_numbers {
@@ -75,12 +76,12 @@ struct LEMON_residual_solver_options
   /// threads if `concurrent` (default 5000; 0: never); on the 1.15M-face chain10 of the benchmark the
   /// residual is about 20 % longer without them
   std::size_t split_band_nodes = 5000;
-  /// on problems of at most this many faces (default 1,000,000; 0: never) the first band of each level
+  /// on problems of at most this many faces (default: no limit; 0: never) the first band of each level
   /// grows only around the jumps off the curve (the completions of its gaps, which move from level to
   /// level), and the jumps on the curve bring only their two faces: smaller bands, less network simplex
-  /// (residual summed over the benchmark's 232 cases with handles 9.5 % lower); beyond a million faces
-  /// the first certificate then has more to repair than the band saves
-  std::size_t narrow_curve_band_nodes = 1000000;
+  /// (residual summed over the benchmark's 232 cases with handles 9.5 % lower, 1.15M-face chain10's
+  /// 15 % lower)
+  std::size_t narrow_curve_band_nodes = (std::numeric_limits<std::size_t>::max)();
   /// on levels of at least this many nodes (default 100,000; 0: every level) the flow carried down
   /// from the coarser level is first balanced inside the regions of the coarser levels, by
   /// augmenting paths within a work budget, before the certificate's maximum flow: about 20 % of the
