@@ -359,8 +359,8 @@ TEST(Solver, ConcurrentFactorizationsGiveTheSameAnswerAsSequential)
 #ifdef CGAL_SWN_USE_CHOLMOD
 // The package's supernodal factorization (the default sparse solver) on a matrix that is not a mesh
 // Laplacian: a 2D grid with a dense block coupled to it (supernodes of one column to dozens), against
-// Eigen's LLT, one and many columns, from two threads at once; a matrix that is not positive definite
-// is reported, never solved.
+// Eigen's LLT, one and many columns, from two threads at once, and the halves of a solve (forward of unit
+// vectors, sparse, included); a matrix that is not positive definite is reported, never solved.
 TEST(SupernodalCholesky, AgreesWithEigenAndReportsIndefiniteMatrices)
 {
   typedef Eigen::SparseMatrix<double> SM;
@@ -404,6 +404,44 @@ TEST(SupernodalCholesky, AgreesWithEigenAndReportsIndefiniteMatrices)
   other.join();
   EXPECT_LT(difference[0], 1e-12 * X.norm());
   EXPECT_LT(difference[1], 1e-12 * X.norm());
+  // the halves of a solve, and the forward half of unit vectors (A = Q^T L L^T Q): g_d = L^-1 Q e_d is
+  // that of the whole forward half, nonzero on few entries, and g_i . g_j = (A^-1)_ij
+  std::vector<double> w, scratch, y;
+  Eigen::VectorXd x0(n);
+  S.forward(B.col(0).data(), w, scratch);
+  S.backward(w, x0.data(), scratch);
+  EXPECT_LT((x0 - X.col(0)).norm(), 1e-12 * X.norm());
+  const int unknowns[3] = {0, 17 * 9, g * g + 5};
+  SI::Sparse_column gs[3];
+  for(int a = 0; a < 3; ++a)
+  {
+    const int d = unknowns[a];
+    S.unit_forward(std::size_t(d), gs[a], y);
+    EXPECT_TRUE(std::all_of(y.begin(), y.end(), [](double v) { return v == 0; }));   // left as it came
+    EXPECT_LT(gs[a].index.size(), std::size_t(n));
+    const Eigen::VectorXd e = Eigen::VectorXd::Unit(n, d);
+    S.forward(e.data(), w, scratch);
+    Eigen::VectorXd sparse = Eigen::VectorXd::Zero(n);
+    for(std::size_t k = 0; k < gs[a].index.size(); ++k)
+    {
+      if(k > 0) EXPECT_LT(gs[a].index[k - 1], gs[a].index[k]);
+      sparse[Eigen::Index(gs[a].index[k])] = gs[a].value[k];
+    }
+    EXPECT_LT((sparse - Eigen::Map<const Eigen::VectorXd>(w.data(), n)).norm(), 1e-14 * sparse.norm());
+  }
+  EXPECT_LT(gs[0].index.size(), std::size_t(n / 4));   // a corner of the grid: a short path in the elimination tree
+  for(int a = 0; a < 3; ++a)
+  {
+    const Eigen::VectorXd column = reference.solve(Eigen::VectorXd::Unit(n, unknowns[a]));
+    for(int b = 0; b < 3; ++b)
+    {
+      double dot = 0;
+      for(std::size_t k = 0; k < gs[a].index.size(); ++k)
+        for(std::size_t l = 0; l < gs[b].index.size(); ++l)
+          if(gs[a].index[k] == gs[b].index[l]) dot += gs[a].value[k] * gs[b].value[l];
+      EXPECT_NEAR(dot, column[unknowns[b]], 1e-12 * std::abs(column[unknowns[a]]));
+    }
+  }
   SM indefinite = A;
   indefinite.coeffRef(g * g + 3, g * g + 3) = -1;
   SI::Supernodal_cholesky<SM> F;

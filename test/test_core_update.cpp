@@ -64,41 +64,52 @@ TEST(JumpLaplace, EndpointUpdateAgreesWithAFreshFactorization)
 
 TEST(JumpLaplace, EndpointUpdatesKeepTheColumnsOfTheInverse)
 {
-  // the columns of A^-1 an update solves are kept for the next updates of the same factorization: a
-  // stroke kept (its endpoints) costs no solve the next time, and the answer is that of a fresh
-  // factorization whether the columns are kept, taken from the cache, or not kept at all
+  // With a factorization that offers no sparse forward solves (Eigen's LDLT), the columns of A^-1 an
+  // update solves are kept for the next updates of the same factorization: a stroke kept (its
+  // endpoints) costs no solve the next time, and the answer is that of a fresh factorization whether
+  // the columns are kept, taken from the cache, or not kept at all. With the package's supernodal
+  // factorization (sparse forward solves of the unit vectors instead) no column is kept.
+  typedef SI::Eigen_LDLT_sparse_solver LDLT;
+  static_assert(!SI::Has_unit_forward<LDLT>::value, "Eigen's LDLT offers no sparse forward solves");
   const int nv = 9;
   const Torus_with_0form_laplacian torus(16, nv);
   const SI::Mesh_tables& t = torus.tables();
   const std::vector<double> c = random_values(3 * t.nf, 4);
-  const SI::Jump_laplace_system<LA>& L0 = torus.L0;   // its copies share its cache
+  SI::Jump_laplace_system<LDLT> L0;   // its copies share its cache
+  L0.jump_laplacian(t, torus.w, std::vector<char>(t.nv, 0));
   const auto V = torus_vertex(torus.vs, nv);
   std::vector<char> first(t.nv, 0), second(t.nv, 0), both(t.nv, 0);
   first[torus.solver->vertex_index(V(3, 2))] = 1;
   second[torus.solver->vertex_index(V(10, 5))] = 1;
   for(std::size_t v = 0; v < t.nv; ++v) both[v] = first[v] | second[v];
-  const auto agrees = [&](const std::vector<char>& excluded, std::size_t column_bytes, const std::string& what) {
-    SI::Jump_laplace_system<LA> fresh, updated(L0);
+  const auto agrees = [&](const auto& base, const std::vector<char>& excluded, std::size_t column_bytes, const std::string& what) {
+    std::decay_t<decltype(base)> fresh, updated(base);
     fresh.jump_laplacian(t, torus.w, excluded);
     ASSERT_TRUE(updated.exclude_by_update(excluded, SI::jump_laplacian_max_update_rank, column_bytes)) << what;
     EXPECT_LT(max_difference_up_to_a_constant(t, updated.solve_jump_laplace(c), fresh.solve_jump_laplace(c), excluded), 1e-9)
       << what;
   };
   const std::size_t all = SI::column_cache_bytes, column = L0.size() * sizeof(double);
-  agrees(both, 0, "columns not kept (too large): two solves");
+  agrees(L0, both, 0, "columns not kept (too large): two solves");
   EXPECT_EQ(L0.cached_columns(), 0u);
-  agrees(first, all, "one endpoint");
+  agrees(L0, first, all, "one endpoint");
   const std::size_t one = L0.cached_columns();   // the endpoint and its neighbours
   EXPECT_GE(one, 4u);
-  agrees(first, all, "the same endpoint again, from the cache");
+  agrees(L0, first, all, "the same endpoint again, from the cache");
   EXPECT_EQ(L0.cached_columns(), one);   // nothing solved anew
-  agrees(both, all, "that endpoint and another");
+  agrees(L0, both, all, "that endpoint and another");
   EXPECT_EQ(L0.cached_columns(), 2 * one);   // only the second endpoint's columns were solved
   // room for one endpoint's columns and one more: the latest kept, the oldest out
-  agrees(second, (one + 1) * column, "the second endpoint, in a smaller cache");
+  agrees(L0, second, (one + 1) * column, "the second endpoint, in a smaller cache");
   EXPECT_EQ(L0.cached_columns(), one + 1);
-  agrees(first, (one + 1) * column, "the first endpoint again, mostly solved anew");
+  agrees(L0, first, (one + 1) * column, "the first endpoint again, mostly solved anew");
   EXPECT_EQ(L0.cached_columns(), one + 1);
+  if(SI::Has_unit_forward<LA>::value)
+  {
+    agrees(torus.L0, both, all, "two endpoints, sparse forward solves");
+    agrees(torus.L0, first, all, "one endpoint, sparse forward solves");
+    EXPECT_EQ(torus.L0.cached_columns(), 0u);
+  }
 }
 
 TEST(JumpLaplace, EndpointUpdateRefusesSplitComponentsAndLargeRanks)

@@ -89,6 +89,22 @@ private:
   typename std::remove_reference_t<decltype(std::declval<LA&>().solver())>::Solve_workspace ws_;
 };
 
+// A sparse vector: its nonzero entries, by increasing index
+struct Sparse_column
+{
+  std::vector<std::size_t> index;
+  std::vector<double> value;
+};
+
+// Solvers whose factorization A = P^T L L^T P offers the halves of a solve and the sparse forward
+// solves of unit vectors (Supernodal_cholesky: forward(), backward(), unit_forward())
+template <class LA, class = void>
+struct Has_unit_forward : std::false_type {};
+template <class LA>
+struct Has_unit_forward<LA, std::void_t<decltype(std::declval<LA&>().solver().unit_forward(
+                              std::size_t(0), std::declval<Sparse_column&>(), std::declval<std::vector<double>&>()))>>
+  : std::true_type {};
+
 // Work that a thread (the owner) shares with one that would otherwise wait for it (a helper): the
 // owner publishes a function that claims and does pieces of the work until none is left, does it
 // itself, and returns once every helper that joined is done; a helper joins if the work is published

@@ -151,11 +151,12 @@ inline std::size_t number_jump_laplace_unknowns(const Mesh_tables& m, const std:
   return n;
 }
 
-// The largest update of exclude_by_update(): its |T| columns are solved in blocks of
-// vertex_laplace_block, which must cost less than the factorization they replace.
+// The largest update of exclude_by_update(): its |T| columns must cost less than the factorization
+// they replace.
 constexpr std::size_t jump_laplacian_max_update_rank = 96;
-// memory for the columns of the inverse that the updates keep for the next ones (64 MB: 160 columns
-// on a 100k-face mesh, 16 on a 1M-face one); an update whose own columns do not fit keeps none
+// memory for the columns of the inverse that the updates keep for the next ones, with a factorization
+// that offers no sparse forward solves (64 MB: 160 columns on a 100k-face mesh, 16 on a 1M-face one); an
+// update whose own columns do not fit keeps none
 constexpr std::size_t column_cache_bytes = std::size_t(64) << 20;
 
 // The jump Laplace system (paper Eqs. 6-8, 10) on V* = vertices minus interior endpoints. The
@@ -230,8 +231,9 @@ public:
     {
       Vector b = jump_laplace_rhs(c);
       Vector x(static_cast<int>(n_));
-      if(!la_->linear_solver(b, x)) throw Solver_failure("jump Laplace solve failed");
-      if(update_)   // A* x = b with A* = A + P M P^T: x = A^-1 b - Z M q, (I + Z_T M) q = (A^-1 b)_T
+      if(solve_by_halves(b, x)) {}
+      else if(!la_->linear_solver(b, x)) throw Solver_failure("jump Laplace solve failed");
+      else if(update_)   // A* x = b with A* = A + P M P^T: x = A^-1 b - Z M q, (I + Z_T M) q = (A^-1 b)_T
       {
         const std::vector<std::size_t>& T = update_->dofs;
         Eigen::VectorXd yT(Eigen::Index(T.size()));
@@ -318,11 +320,15 @@ public:
   // for each excluded vertex, that system A* differs from the 0-form Laplacian A only on the rows and
   // columns T of the excluded vertices and of their neighbours: A* = A + P M P^T (P: the columns of
   // the identity at T), solved with A's factorization by the Woodbury identity: (I + Z_T M) q = (A^-1 b)_T,
-  // then x = A^-1 (b - P M q), where Z_T = P^T A^-1 P takes |T| solves here and every solve two.
+  // then x = A^-1 (b - P M q), where Z_T = P^T A^-1 P.
   // Returns false, the system unchanged, when |T| > max_rank or when V* needs other pinned vertices
   // than A's (a component's pinned vertex excluded, or a component split by the excluded vertices).
-  // The columns of A^-1 that the update needs are kept with it (one solve per solve_jump_laplace()
-  // instead of two) and for the next updates of copies of A, within `column_bytes`.
+  // With a factorization A = Q^T L L^T Q that offers sparse forward solves (Has_unit_forward: the
+  // package's supernodal one), Z_T = G^T G with G = L^-1 Q P, whose columns reach only the supernodes
+  // on the way from theirs to the root of the elimination tree, and every solve is one solve of A with
+  // G applied between its halves (solve_by_halves()). Otherwise the columns Z = A^-1 P take |T| solves,
+  // kept with the update (one solve per solve_jump_laplace() instead of two) and for the next updates
+  // of copies of A, within `column_bytes`.
   bool exclude_by_update(const std::vector<char>& excluded, std::size_t max_rank = jump_laplacian_max_update_rank,
                          std::size_t column_bytes = column_cache_bytes)
   {
@@ -369,10 +375,18 @@ public:
     }
     for(std::size_t v = 0; v < m.nv; ++v)
       if(excluded[v]) update->M(Eigen::Index(local[dof_[v]]), Eigen::Index(local[dof_[v]])) += 1;
-    // Z_T from the columns Z = A^-1 P: kept (in the update, and in the cache of the factorization for
-    // the next updates) when they fit in column_cache_bytes, otherwise only solved block by block
+    // Z_T = G^T G from the sparse G = L^-1 Q P when the factorization A = Q^T L L^T Q offers it (its
+    // columns reach only the supernodes from theirs to the root); otherwise from the columns Z = A^-1 P:
+    // kept (in the update, and in the cache of the factorization for the next updates) when they fit
+    // in column_cache_bytes, otherwise only solved block by block
     Eigen::MatrixXd ZT(t, t);
-    if(T.size() * n_ * sizeof(double) <= column_bytes)
+    if(forward_columns(T, update->forward))
+    {
+      const std::vector<Sparse_column>& G = update->forward;
+      for(std::size_t j = 0; j < T.size(); ++j)
+        for(std::size_t i = 0; i <= j; ++i) ZT(Eigen::Index(i), Eigen::Index(j)) = ZT(Eigen::Index(j), Eigen::Index(i)) = dot(G[i], G[j]);
+    }
+    else if(T.size() * n_ * sizeof(double) <= column_bytes)
     {
       update->columns = columns_of_inverse(T, column_bytes);
       for(std::size_t j = 0; j < T.size(); ++j)
@@ -396,6 +410,63 @@ public:
 
 private:
   typedef std::shared_ptr<const std::vector<double>> Column;
+
+  // G = L^-1 Q P (the unit vectors of the unknowns T after the forward half of a solve) with a
+  // factorization A = Q^T L L^T Q that offers it (Has_unit_forward); false otherwise
+  bool forward_columns(const std::vector<std::size_t>& T, std::vector<Sparse_column>& G) const
+  {
+    if constexpr(Has_unit_forward<LA>::value)
+    {
+      G.resize(T.size());
+      std::vector<double> y;
+      for(std::size_t j = 0; j < T.size(); ++j) la_->solver().unit_forward(T[j], G[j], y);
+      return true;
+    }
+    else return false;
+  }
+
+  static double dot(const Sparse_column& g, const Sparse_column& h)
+  {
+    double s = 0;
+    for(std::size_t i = 0, j = 0; i < g.index.size() && j < h.index.size();)
+    {
+      if(g.index[i] < h.index[j]) ++i;
+      else if(h.index[j] < g.index[i]) ++j;
+      else s += g.value[i++] * h.value[j++];
+    }
+    return s;
+  }
+
+  // A* x = b for an update with the sparse G of forward_columns(): with w = L^-1 Q b,
+  // x = Q^T L^-T (w - G M q) where (I + G^T G M) q = G^T w. False (x unchanged) if the update has no G.
+  bool solve_by_halves(const Vector& b, Vector& x) const
+  {
+    if constexpr(Has_unit_forward<LA>::value)
+    {
+      if(!update_ || update_->forward.empty()) return false;
+      const std::vector<Sparse_column>& G = update_->forward;
+      std::vector<double> w, scratch;
+      la_->solver().forward(b.data(), w, scratch);
+      Eigen::VectorXd yT(Eigen::Index(G.size()));
+      for(std::size_t j = 0; j < G.size(); ++j)
+      {
+        double s = 0;
+        for(std::size_t k = 0; k < G[j].index.size(); ++k) s += G[j].value[k] * w[G[j].index[k]];
+        yT[Eigen::Index(j)] = s;
+      }
+      const Eigen::VectorXd Mq = update_->M * update_->K.solve(yT);
+      for(std::size_t j = 0; j < G.size(); ++j)
+        for(std::size_t k = 0; k < G[j].index.size(); ++k) w[G[j].index[k]] -= Mq[Eigen::Index(j)] * G[j].value[k];
+      la_->solver().backward(w, x.data(), scratch);
+      return true;
+    }
+    else
+    {
+      (void)b;
+      (void)x;
+      return false;
+    }
+  }
 
   // Solves A z = e_d for the unknowns d = T[j], j in `which`, in blocks of columns; calls f(j, z) for each.
   template <class F>
@@ -488,6 +559,7 @@ private:
   {
     std::vector<std::size_t> dofs;
     std::vector<Column> columns;   // A^-1 e_d for d in dofs
+    std::vector<Sparse_column> forward;   // or L^-1 Q e_d (forward_columns())
     Eigen::MatrixXd M;
     Eigen::PartialPivLU<Eigen::MatrixXd> K;
   };

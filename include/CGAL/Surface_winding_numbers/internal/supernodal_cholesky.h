@@ -13,6 +13,7 @@
 #ifndef CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_SUPERNODAL_CHOLESKY_H
 #define CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_SUPERNODAL_CHOLESKY_H
 
+#include <CGAL/Surface_winding_numbers/internal/column_solves.h>
 #include <CGAL/Surface_winding_numbers/internal/nested_dissection.h>
 
 #include <Eigen/Cholesky>
@@ -75,6 +76,53 @@ public:
     for(std::size_t j = 0; j < k; ++j)
       for(std::size_t i = 0; i < n; ++i) ws.x_[j * n + perm_[i]] = ws.y_[j * n + i];
     return ws.x_.data();
+  }
+
+  // The two halves of a solve with one right-hand side b (n values): w = L^-1 P b, in the factor's
+  // order, then x = P^T L^-T w (w is overwritten); t: scratch
+  void forward(const double* b, std::vector<double>& w, std::vector<double>& t) const
+  {
+    w.resize(n_);
+    for(std::size_t i = 0; i < n_; ++i) w[i] = b[perm_[i]];
+    forward_in_place(w.data(), 1, t);
+  }
+  void backward(std::vector<double>& w, double* x, std::vector<double>& t) const
+  {
+    backward_in_place(w.data(), 1, t);
+    for(std::size_t i = 0; i < n_; ++i) x[perm_[i]] = w[i];
+  }
+
+  // g = L^-1 P e_d, the forward half for the unit vector of unknown d: nonzero only on the columns of
+  // the supernodes from d's to the root of the elimination tree, the only ones visited. y: n zeros
+  // (sized here the first time), left so.
+  void unit_forward(std::size_t d, Sparse_column& g, std::vector<double>& y) const
+  {
+    y.resize(n_, 0.);
+    g.index.clear();
+    g.value.clear();
+    std::vector<double> t;
+    const std::size_t k = inverse_[d];
+    y[k] = 1;
+    for(std::size_t s = supernode_of_[k]; s != none_; s = parent_[s])
+    {
+      const std::size_t k1 = super_[s], ncol = super_[s + 1] - k1, r0 = row_begin_[s], nrow = row_begin_[s + 1] - r0;
+      const Const_block Ls(Lx_.data() + block_begin_[s], Index(nrow), Index(ncol), Eigen::OuterStride<>(Index(nrow)));
+      Eigen::Map<Eigen::VectorXd> Y1(y.data() + k1, Index(ncol));
+      Ls.topRows(Index(ncol)).template triangularView<Eigen::Lower>().solveInPlace(Y1);
+      if(nrow > ncol)
+      {
+        const std::size_t m = nrow - ncol;
+        t.resize(m);
+        Eigen::Map<Eigen::VectorXd> T(t.data(), Index(m));
+        T.noalias() = Ls.bottomRows(Index(m)) * Y1;
+        for(std::size_t r = 0; r < m; ++r) y[rows_[r0 + ncol + r]] -= t[r];
+      }
+      for(std::size_t i = k1; i < k1 + ncol; ++i)
+      {
+        if(y[i] != 0) { g.index.push_back(i); g.value.push_back(y[i]); }
+        y[i] = 0;
+      }
+    }
   }
 
   template <class Rhs>
@@ -144,6 +192,18 @@ private:
       block_begin_.assign(px, px + L->nsuper + 1);
       rows_.assign(s, s + pi[L->nsuper]);
       Lx_.assign(std::size_t(px[L->nsuper]), 0.);
+      // the elimination tree of the supernodes: a supernode's parent holds its first row below its columns
+      inverse_.resize(n_);
+      supernode_of_.resize(n_);
+      parent_.assign(L->nsuper, none_);
+      for(std::size_t k = 0; k < n_; ++k) inverse_[perm_[k]] = k;
+      for(std::size_t q = 0; q + 1 < super_.size(); ++q)
+        for(std::size_t k = super_[q]; k < super_[q + 1]; ++k) supernode_of_[k] = q;
+      for(std::size_t q = 0; q + 1 < super_.size(); ++q)
+      {
+        const std::size_t first_row = row_begin_[q] + (super_[q + 1] - super_[q]);
+        if(first_row < row_begin_[q + 1]) parent_[q] = supernode_of_[rows_[first_row]];
+      }
     }
     cholmod_free_factor(&L, &c);
     cholmod_finish(&c);
@@ -156,10 +216,9 @@ private:
   bool factorize(const EigenMatrix& A)
   {
     const std::size_t ns = super_.size() - 1, none = std::size_t(-1);
-    std::vector<std::size_t> inverse(n_), supernode_of(n_), map(n_), next(ns, none), head(ns, none), position(ns, 0);
-    for(std::size_t k = 0; k < n_; ++k) inverse[perm_[k]] = k;
-    for(std::size_t s = 0; s < ns; ++s)
-      for(std::size_t k = super_[s]; k < super_[s + 1]; ++k) supernode_of[k] = s;
+    const std::vector<std::size_t>& inverse = inverse_;
+    const std::vector<std::size_t>& supernode_of = supernode_of_;
+    std::vector<std::size_t> map(n_), next(ns, none), head(ns, none), position(ns, 0);
     std::vector<std::size_t> relative;
     Eigen::MatrixXd C;
     for(std::size_t s = 0; s < ns; ++s)
@@ -223,10 +282,17 @@ private:
   // L L^T Y = Y for the k columns of Y (n x k, in the factor's order); t: scratch
   void solve_in_place(double* Y, std::size_t k, std::vector<double>& t) const
   {
+    forward_in_place(Y, k, t);
+    backward_in_place(Y, k, t);
+  }
+
+  // L Z = Y, Z in place of Y
+  void forward_in_place(double* Y, std::size_t k, std::vector<double>& t) const
+  {
     const std::size_t ns = super_.size() - 1;
     const Index kk = Index(k);
     const Eigen::OuterStride<> column_stride{Index(n_)};
-    for(std::size_t s = 0; s < ns; ++s)   // forward: L Z = Y
+    for(std::size_t s = 0; s < ns; ++s)
     {
       const std::size_t k1 = super_[s], ncol = super_[s + 1] - k1, r0 = row_begin_[s], nrow = row_begin_[s + 1] - r0;
       const Const_block Ls(Lx_.data() + block_begin_[s], Index(nrow), Index(ncol), Eigen::OuterStride<>(Index(nrow)));
@@ -240,7 +306,15 @@ private:
       for(std::size_t j = 0; j < k; ++j)
         for(std::size_t r = 0; r < m; ++r) Y[j * n_ + rows_[r0 + ncol + r]] -= t[j * m + r];
     }
-    for(std::size_t s = ns; s-- > 0;)   // backward: L^T X = Z
+  }
+
+  // L^T X = Y, X in place of Y
+  void backward_in_place(double* Y, std::size_t k, std::vector<double>& t) const
+  {
+    const std::size_t ns = super_.size() - 1;
+    const Index kk = Index(k);
+    const Eigen::OuterStride<> column_stride{Index(n_)};
+    for(std::size_t s = ns; s-- > 0;)
     {
       const std::size_t k1 = super_[s], ncol = super_[s + 1] - k1, r0 = row_begin_[s], nrow = row_begin_[s + 1] - r0;
       const Const_block Ls(Lx_.data() + block_begin_[s], Index(nrow), Index(ncol), Eigen::OuterStride<>(Index(nrow)));
@@ -258,9 +332,11 @@ private:
     }
   }
 
+  static constexpr std::size_t none_ = std::size_t(-1);
   bool ok_ = false;
   std::size_t n_ = 0;
   std::vector<std::size_t> perm_, super_, row_begin_, block_begin_, rows_;
+  std::vector<std::size_t> inverse_, supernode_of_, parent_;   // by unknown: position in the factor; by position: supernode; by supernode
   std::vector<double> Lx_;
 };
 
