@@ -1,8 +1,9 @@
 // Copyright (c) 2026 The CGAL Surface Winding Numbers project.
 // SPDX-License-Identifier: MIT
 //
-// Solves with a factorized sparse system for many right-hand sides at once, and the sharing of such
-// work with a second thread (the Hodge step's many-column solve).
+// The sparse systems of the linear-algebra traits: their assembly from a list of entries, solves with
+// a factorized system for many right-hand sides at once, and the sharing of such work with a second
+// thread (the Hodge step's many-column solve).
 
 #ifndef CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_COLUMN_SOLVES_H
 #define CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_COLUMN_SOLVES_H
@@ -14,6 +15,7 @@
 #include <condition_variable>
 #include <cstddef>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <type_traits>
 #include <utility>
@@ -22,6 +24,44 @@
 namespace CGAL {
 namespace Surface_winding_numbers {
 namespace internal {
+
+// An entry of a sparse matrix (the accessors are those of Eigen::Triplet)
+struct Matrix_entry
+{
+  int i, j;
+  double v;
+  int row() const { return i; }
+  int col() const { return j; }
+  double value() const { return v; }
+};
+
+// The n x n matrix of the traits with the given entries (duplicates summed); `entries` is emptied
+// and its memory freed. A traits matrix that wraps an Eigen matrix (CGAL::Eigen_sparse_matrix) is
+// filled directly: its own list of entries would otherwise keep the capacity it grew to for as long
+// as the matrix lives (74 MB at 577k unknowns, next to the factorization); any other gets add_coef().
+template <class Matrix>
+void fill_matrix(Matrix& A, std::vector<Matrix_entry>& entries, long)
+{
+  for(const Matrix_entry& e : entries) A.add_coef(e.i, e.j, e.v);
+}
+
+#ifdef CGAL_EIGEN3_ENABLED
+template <class Matrix>
+auto fill_matrix(Matrix& A, std::vector<Matrix_entry>& entries, int)
+  -> decltype(A.eigen_object().setFromTriplets(entries.begin(), entries.end()), void())
+{
+  A.eigen_object().setFromTriplets(entries.begin(), entries.end());
+}
+#endif
+
+template <class Matrix>
+std::unique_ptr<Matrix> assembled_matrix(std::size_t n, std::vector<Matrix_entry>& entries)
+{
+  std::unique_ptr<Matrix> A(new Matrix(static_cast<int>(n), static_cast<int>(n)));
+  fill_matrix(*A, entries, 0);
+  std::vector<Matrix_entry>().swap(entries);
+  return A;
+}
 
 // X = A^-1 B for the k columns of B (n x k, column-major; X is resized to n x k) with a factorized
 // `la`: one solve per column, or a single pass over the factorization for all of them when the traits

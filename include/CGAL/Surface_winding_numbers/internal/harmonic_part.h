@@ -50,7 +50,8 @@ public:
     if(n == 0) { m_ = &m; return; }
     // diagonal entries summed per face first, so that every matrix entry is added once
     std::vector<double> diagonal(n, 0.);
-    A_.reset(new Matrix(static_cast<int>(n), static_cast<int>(n)));
+    std::vector<Matrix_entry> entries;
+    entries.reserve(m.edge_sides.size() + n);   // an estimate (exact on manifold meshes)
     for(std::size_t e = 0; e < m.ne; ++e)
       for(std::size_t i = m.edge_side_begin[e]; i < m.edge_side_begin[e + 1]; ++i)
       {
@@ -60,7 +61,7 @@ public:
         for(std::size_t j = m.edge_side_begin[e]; j < m.edge_side_begin[e + 1]; ++j)
         {
           const std::size_t t = m.edge_sides[j], fj = dof_[t / 3];
-          if(j != i && fj != npos) A_->add_coef(fi, fj, m.fs[s] * m.fs[t] / star[e]);
+          if(j != i && fj != npos) entries.push_back({int(fi), int(fj), m.fs[s] * m.fs[t] / star[e]});
         }
       }
     // A nonmanifold surface may hold several 2-cycles per component, a nonorientable one none: no
@@ -72,7 +73,8 @@ public:
       for(double d : diagonal) shift += d;
       shift *= 1e-10 / double(n);
     }
-    for(std::size_t k = 0; k < n; ++k) A_->add_coef(k, k, diagonal[k] + shift);
+    for(std::size_t k = 0; k < n; ++k) entries.push_back({int(k), int(k), diagonal[k] + shift});
+    A_ = assembled_matrix<Matrix>(n, entries);
     double D = 1;
     if(!la_->factor(*A_, D)) throw Solver_failure("factorization of the 2-form Laplacian failed");
     m_ = &m;

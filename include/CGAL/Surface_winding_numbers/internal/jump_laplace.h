@@ -189,7 +189,8 @@ public:
     std::vector<double> edge_weight(m.ne, 0.), diagonal(n, 0.);
     for(std::size_t s = 0; s < 3 * m.nf; ++s)
       if(!excluded[m.tail(s)] && !excluded[m.head(s)]) edge_weight[m.fe[s]] += weight[s];
-    A_.reset(new Matrix(static_cast<int>(n), static_cast<int>(n)));
+    std::vector<Matrix_entry> entries;
+    entries.reserve(2 * m.ne + n);
     for(std::size_t e = 0; e < m.ne; ++e)
     {
       const double w = edge_weight[e];
@@ -197,9 +198,14 @@ public:
       const std::size_t i = dof_[m.ev[2 * e]], j = dof_[m.ev[2 * e + 1]];
       if(i != npos) diagonal[i] += w;
       if(j != npos) diagonal[j] += w;
-      if(i != npos && j != npos) { A_->add_coef(i, j, -w); A_->add_coef(j, i, -w); }
+      if(i != npos && j != npos)
+      {
+        entries.push_back({int(i), int(j), -w});
+        entries.push_back({int(j), int(i), -w});
+      }
     }
-    for(std::size_t k = 0; k < n; ++k) A_->add_coef(k, k, diagonal[k]);
+    for(std::size_t k = 0; k < n; ++k) entries.push_back({int(k), int(k), diagonal[k]});
+    A_ = assembled_matrix<Matrix>(n, entries);
     double D = 1;
     if(!la_->factor(*A_, D)) throw Solver_failure("factorization of the jump Laplacian failed");
   }
