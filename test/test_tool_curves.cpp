@@ -278,6 +278,13 @@ TEST(ToolCurves, MessagesNameTheRecordThatFails)
     EXPECT_EQ(r.err.find("too far"), std::string::npos) << r.err;
     EXPECT_EQ(r.err.find("farther"), std::string::npos) << r.err;
   }
+  // a closed stroke inside one face of the grid: it crosses no edge, and the error says so (not "cancels out")
+  std::ofstream(dir / "one_face.obj") << "v 0.2 0.1 0\nv 0.6 0.2 0\nv 0.7 0.5 0\nl 1 2 3 1\n";
+  r = run(grid + " --polylines '" + (dir / "one_face.obj").string() + "'");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("one_face.obj:4: no curve left on the surface: the polylines cross no edge of the mesh (each stays "
+                       "inside one face)"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("cancels out"), std::string::npos) << r.err;
   // an OBJ mesh whose `l` record leaves the faces (points above the grid, on no face): a hint at --polylines
   std::ofstream obj(dir / "mesh_and_stroke.obj");
   write_grid4_obj(obj);
