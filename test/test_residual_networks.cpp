@@ -1,7 +1,8 @@
 // The exact residual solver's building blocks and edge cases (maximum flows, bounds, fixed arcs, infeasible
 // and malformed problems) and its agreement with GLPK on real instances and whole solves.
 #include "test_residual_support.h"
-// internal::Warm_push_relabel on random networks with scattered excesses and deficits: the flow it
+// internal::Warm_push_relabel on random networks with scattered excesses and deficits, by push-relabel
+// (run()) and by augmenting paths (run_paths()): the flow it
 // moves is a maximum flow (the value of internal::Boykov_kolmogorov_flow, Boost's, from scratch), stays within the
 // capacities and conserves every imbalance it does not absorb; on a cut, no residual arc leaves
 // the source side and every excess left is on it. The same checks hold for Boykov-Kolmogorov's flow.
@@ -9,9 +10,11 @@ TEST(LemonResidual, WarmPushRelabelIsAMaximumFlow)
 {
   typedef long long Int;
   typedef SI::Warm_push_relabel<Int> PR;
-  std::size_t balanced = 0, cut = 0, with_gaps = 0;
-  for(unsigned seed = 1; seed <= 200; ++seed)
+  std::size_t balanced = 0, cut = 0, with_gaps = 0, path_gaps = 0;
+  for(unsigned run = 0; run < 400; ++run)
   {
+    const unsigned seed = run / 2 + 1;
+    const bool paths = run % 2 == 1;
     std::mt19937 gen(seed);
     const std::size_t n = 5 + gen() % 60, m = n + gen() % (3 * n);
     std::vector<std::size_t> tail(m), head(m);
@@ -27,9 +30,9 @@ TEST(LemonResidual, WarmPushRelabelIsAMaximumFlow)
     PR pr(n);
     for(std::size_t i = 0; i < m; ++i) pr.add_arc(tail[i], head[i], cap[i], back[i]);
     for(std::size_t v = 0; v < n; ++v) pr.set_terminal(v, b[v]);
-    const PR::Outcome outcome = pr.run();
+    const PR::Outcome outcome = paths ? pr.run_paths() : pr.run();
     ASSERT_NE(outcome, PR::OVER_BUDGET);
-    if(pr.gaps() > 0) ++with_gaps;
+    if(pr.gaps() > 0) ++(paths ? path_gaps : with_gaps);
     // what a flow (push-relabel's or Boykov-Kolmogorov's) leaves at each node; its arcs stay within
     // their capacities
     auto left_by = [&](const auto& flow) {
@@ -101,10 +104,12 @@ TEST(LemonResidual, WarmPushRelabelIsAMaximumFlow)
     }
     expect_cut_saturated(pr);
   }
-  EXPECT_GT(balanced, 10u);
-  EXPECT_GT(cut, 10u);
+  EXPECT_GT(balanced, 20u);
+  EXPECT_GT(cut, 20u);
   EXPECT_GT(with_gaps, 10u);   // the gap heuristic took part
-  std::printf("push-relabel: %zu balanced, %zu cuts, gaps found in %zu runs\n", balanced, cut, with_gaps);
+  EXPECT_GT(path_gaps, 10u);
+  std::printf("push-relabel and augmenting paths: %zu balanced, %zu cuts, gaps found in %zu and %zu runs\n", balanced, cut,
+              with_gaps, path_gaps);
 }
 
 // Without refinements, an answer the certificate refuses goes to network simplex on the whole:

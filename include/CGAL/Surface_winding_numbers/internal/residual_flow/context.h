@@ -49,6 +49,7 @@ struct Context
   Options options;
   Statistics stats;
   std::string error;
+  bool augmenting_paths = false;   // certificates by Warm_push_relabel::run_paths() (the warm start's)
 
   bool fail(const std::string& why)
   {

@@ -77,8 +77,9 @@ inline void mark_barrier(Level& lv, const std::vector<Int>& x, std::vector<char>
 // Optimality of pi on a level: true if a circulation x with left_slope(J) <= x <= right_slope(J)
 // exists on every arc; otherwise false, with the barrier (the source side of a minimum cut) marked.
 // As a maximum flow from the level's flow lv.x clamped to the bounds (the flows carried down the
-// hierarchy and written by the bands are nearly balanced): push-relabel (Warm_push_relabel), fast
-// while the imbalances are local, within a work budget (Options::max_flow_budget), then
+// hierarchy and written by the bands are nearly balanced): push-relabel (Warm_push_relabel; by
+// augmenting paths with ctx.augmenting_paths), fast while the imbalances are local, within a work
+// budget (Options::max_flow_budget), then
 // Boykov-Kolmogorov from where it stopped (faster on some large certificates). lv.x gets the flow
 // found, and the certificate is checked independently (bounds and conservation, in integers).
 inline bool certify_optimality(Context& ctx, Level& lv, Int U, const std::vector<Int>& pi, std::vector<char>& barrier)
@@ -111,7 +112,8 @@ inline bool certify_optimality(Context& ctx, Level& lv, Int U, const std::vector
     if(!ws.push_relabel) ws.push_relabel.reset(new Push_relabel(lv.n));
     load_max_flow(*ws.push_relabel, lv, ws);
     const double work = budget * double(lv.n + 2 * na);
-    try { outcome = ws.push_relabel->run(budget < 0 || work >= 1e18 ? (std::numeric_limits<std::size_t>::max)() : std::size_t(work)); }
+    const std::size_t limit = budget < 0 || work >= 1e18 ? (std::numeric_limits<std::size_t>::max)() : std::size_t(work);
+    try { outcome = ctx.augmenting_paths ? ws.push_relabel->run_paths(limit) : ws.push_relabel->run(limit); }
     catch(...) { ws.push_relabel.reset(); throw; }
     for(std::size_t i = 0; i < na; ++i) x[i] += ws.push_relabel->flow(i);
     balanced = outcome == Push_relabel::BALANCED;

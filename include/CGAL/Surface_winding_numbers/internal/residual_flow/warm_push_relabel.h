@@ -84,19 +84,8 @@ public:
   // one scan of every node and arc.
   Outcome run(std::size_t work_limit = (std::numeric_limits<std::size_t>::max)())
   {
-    build();
+    start();
     const Index dead = Index(n_);
-    label_.assign(n_, 0);
-    current_.assign(first_.begin(), first_.end() - 1);
-    next_.assign(n_, NONE);
-    // sized only: global_relabel() fills bucket_, count_ and level_, and link() sets before_ and after_
-    bucket_.resize(n_);
-    count_.resize(n_);
-    level_.resize(n_);
-    before_.resize(n_);
-    after_.resize(n_);
-    gaps_ = 0;
-    global_relabel();
     // global relabeling after about as much work as a few sweeps over the graph
     const std::size_t relabel_period = 6 * n_ + first_[n_] / 2;
     std::size_t work = 0, total = 0;
@@ -122,6 +111,91 @@ public:
     return BALANCED;
   }
 
+  // The same maximum flow (same outcomes, same source side on a cut) by shortest augmenting paths
+  // along the same distance labels: each excess in turn is sent along a path of admissible arcs
+  // (the label one lower at each step) to a deficit, retreating from nodes without one (relabelled);
+  // a global relabeling when a label is left empty (a gap) and as often as in run(). No excess is
+  // spread over the nodes on the way: where the excesses must travel far, around the barriers of
+  // the curves (the warm start's certificates), this moves each one along a few paths (the pushes of
+  // run() were 50 times the length of such paths on a moved stroke, benchmark/SPEED.md).
+  Outcome run_paths(std::size_t work_limit = (std::numeric_limits<std::size_t>::max)())
+  {
+    start();
+    const Index dead = Index(n_);
+    const std::size_t relabel_period = 6 * n_ + first_[n_] / 2;
+    std::size_t work = 0, total = 0;
+    std::vector<Index> sources, path;   // path: the half-arcs from the source to v
+    for(std::size_t v = 0; v < n_; ++v)
+      if(b_[v] > 0) sources.push_back(Index(v));
+    for(const Index s : sources)
+    {
+      Index v = s;
+      path.clear();
+      while(b_[s] > 0 && label_[s] < dead)
+      {
+        if(b_[v] < 0)   // augment by what the source holds, the deficit absorbs and the path carries
+        {
+          Int d = (std::min)(b_[s], -b_[v]);
+          for(const Index k : path) d = (std::min)(d, half_[k].r);
+          std::size_t keep = path.size();   // the path up to its first saturated arc stays
+          for(std::size_t q = 0; q < path.size(); ++q)
+          {
+            Half& h = half_[path[q]];
+            h.r -= d;
+            half_[h.rev].r += d;
+            if(h.r == 0 && keep == path.size()) keep = q;
+          }
+          b_[s] -= d;
+          b_[v] += d;
+          work += path.size();
+          path.resize(keep);
+          v = path.empty() ? s : half_[path.back()].head;
+          continue;
+        }
+        Index k = current_[v];
+        const Index end = first_[v + 1];
+        while(k < end && (half_[k].r == 0 || label_[half_[k].head] + 1 != label_[v])) ++k;
+        work += k - current_[v] + 1;
+        current_[v] = k;
+        if(k < end)   // advance
+        {
+          path.push_back(k);
+          v = half_[k].head;
+          continue;
+        }
+        // retreat: v gets one more than its lowest neighbour along a residual arc
+        Index lowest = dead;
+        for(Index j = first_[v]; j < end; ++j)
+          if(half_[j].r > 0) lowest = (std::min)(lowest, label_[half_[j].head]);
+        work += end - first_[v] + 12;
+        current_[v] = first_[v];
+        const Index old = label_[v];
+        label_[v] = lowest >= dead - 1 ? dead : lowest + 1;
+        if(label_[v] != dead) ++count_[label_[v]];
+        const bool gap = old != dead && --count_[old] == 0;
+        if(!path.empty())
+        {
+          path.pop_back();
+          v = path.empty() ? s : half_[path.back()].head;
+        }
+        if(gap || work > relabel_period)
+        {
+          gaps_ += gap ? 1 : 0;
+          total += work + n_ + first_[n_];
+          work = 0;
+          if(total > work_limit) return OVER_BUDGET;
+          global_relabel();
+          path.clear();
+          v = s;
+        }
+      }
+      if(total + work > work_limit) return OVER_BUDGET;
+    }
+    for(std::size_t v = 0; v < n_; ++v)
+      if(b_[v] > 0) { global_relabel(); return CUT; }   // the labels now mark the cut exactly
+    return BALANCED;
+  }
+
   // the number of gaps found by the last run() (see relabel())
   std::size_t gaps() const { return gaps_; }
 
@@ -134,6 +208,23 @@ public:
 
 private:
   static constexpr Index NONE = (std::numeric_limits<Index>::max)();
+
+  // the arrays of a run, sized; exact labels
+  void start()
+  {
+    build();
+    label_.assign(n_, 0);
+    current_.assign(first_.begin(), first_.end() - 1);
+    next_.assign(n_, NONE);
+    // sized only: global_relabel() fills bucket_, count_ and level_, and link() sets before_ and after_
+    bucket_.resize(n_);
+    count_.resize(n_);
+    level_.resize(n_);
+    before_.resize(n_);
+    after_.resize(n_);
+    gaps_ = 0;
+    global_relabel();
+  }
 
   // the half-arcs laid out by tail, once (stable: each node's arcs in the order they were added), each
   // with its head and the position of its reverse next to its residual capacity, so that a node's

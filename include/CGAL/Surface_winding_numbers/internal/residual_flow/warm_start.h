@@ -125,6 +125,13 @@ inline bool warm_solve(Context& ctx, Integer_problem& ip, const Warm_state& w, s
   const int dm = ctx.stats.capacity_exponent - w.m;
   lv.x.resize(w.x.size());
   for(std::size_t i = 0; i < w.x.size(); ++i) lv.x[i] = Int(std::llround(std::ldexp(double(w.x[i]), dm)));
+  // the changed curve's imbalances travel around its barriers: augmenting paths move them whole
+  struct Paths
+  {
+    Context& ctx;
+    Paths(Context& c) : ctx(c) { ctx.augmenting_paths = true; }
+    ~Paths() { ctx.augmenting_paths = false; }
+  } paths(ctx);
   const bool certified = fits_certificate_range(ctx, lv.n, lv.arcs, ip.U) &&
                          certify_level(ctx, levels, 0, ip.U, pi, ctx.options.max_refinements);
   lv.arcs.swap(ip.arcs);
