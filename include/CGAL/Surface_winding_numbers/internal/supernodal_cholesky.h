@@ -105,18 +105,8 @@ public:
     y[k] = 1;
     for(std::size_t s = supernode_of_[k]; s != none_; s = parent_[s])
     {
-      const std::size_t k1 = super_[s], ncol = super_[s + 1] - k1, r0 = row_begin_[s], nrow = row_begin_[s + 1] - r0;
-      const Const_block Ls(Lx_.data() + block_begin_[s], Index(nrow), Index(ncol), Eigen::OuterStride<>(Index(nrow)));
-      Eigen::Map<Eigen::VectorXd> Y1(y.data() + k1, Index(ncol));
-      Ls.topRows(Index(ncol)).template triangularView<Eigen::Lower>().solveInPlace(Y1);
-      if(nrow > ncol)
-      {
-        const std::size_t m = nrow - ncol;
-        t.resize(m);
-        Eigen::Map<Eigen::VectorXd> T(t.data(), Index(m));
-        T.noalias() = Ls.bottomRows(Index(m)) * Y1;
-        for(std::size_t r = 0; r < m; ++r) y[rows_[r0 + ncol + r]] -= t[r];
-      }
+      forward_supernode<Column>(s, y.data(), 1, t);
+      const std::size_t k1 = super_[s], ncol = super_[s + 1] - k1;
       for(std::size_t i = k1; i < k1 + ncol; ++i)
       {
         if(y[i] != 0) { g.index.push_back(i); g.value.push_back(y[i]); }
@@ -286,46 +276,67 @@ private:
     backward_in_place(Y, k, t);
   }
 
-  // L Z = Y, Z in place of Y
+  // L Z = Y, Z in place of Y (one column as a vector: Eigen's kernels for vectors)
   void forward_in_place(double* Y, std::size_t k, std::vector<double>& t) const
   {
-    const std::size_t ns = super_.size() - 1;
-    const Index kk = Index(k);
-    const Eigen::OuterStride<> column_stride{Index(n_)};
-    for(std::size_t s = 0; s < ns; ++s)
-    {
-      const std::size_t k1 = super_[s], ncol = super_[s + 1] - k1, r0 = row_begin_[s], nrow = row_begin_[s + 1] - r0;
-      const Const_block Ls(Lx_.data() + block_begin_[s], Index(nrow), Index(ncol), Eigen::OuterStride<>(Index(nrow)));
-      Block Y1(Y + k1, Index(ncol), kk, column_stride);
-      Ls.topRows(Index(ncol)).template triangularView<Eigen::Lower>().solveInPlace(Y1);
-      if(nrow == ncol) continue;
-      const std::size_t m = nrow - ncol;
-      t.resize(m * k);
-      Eigen::Map<Eigen::MatrixXd> T(t.data(), Index(m), kk);
-      T.noalias() = Ls.bottomRows(Index(m)) * Y1;
-      for(std::size_t j = 0; j < k; ++j)
-        for(std::size_t r = 0; r < m; ++r) Y[j * n_ + rows_[r0 + ncol + r]] -= t[j * m + r];
-    }
+    if(k == 1) forward_pass<Column>(Y, k, t);
+    else forward_pass<Block>(Y, k, t);
   }
 
   // L^T X = Y, X in place of Y
   void backward_in_place(double* Y, std::size_t k, std::vector<double>& t) const
   {
+    if(k == 1) backward_pass<Column>(Y, k, t);
+    else backward_pass<Block>(Y, k, t);
+  }
+
+  typedef Eigen::Map<Eigen::VectorXd> Column;
+  // rows .. rows + r - 1 of the k columns of Y (n x k): a block, or a vector when k = 1
+  Block rows_of(double* Y, std::size_t r, std::size_t k, const Block*) const
+  {
+    return Block(Y, Index(r), Index(k), Eigen::OuterStride<>(Index(n_)));
+  }
+  Column rows_of(double* Y, std::size_t r, std::size_t, const Column*) const { return Column(Y, Index(r)); }
+
+  template <class Rhs>
+  void forward_pass(double* Y, std::size_t k, std::vector<double>& t) const
+  {
+    for(std::size_t s = 0; s + 1 < super_.size(); ++s) forward_supernode<Rhs>(s, Y, k, t);
+  }
+
+  // the forward pass's work at supernode s: its columns of Z, and their updates of the rows below
+  template <class Rhs>
+  void forward_supernode(std::size_t s, double* Y, std::size_t k, std::vector<double>& t) const
+  {
+    const std::size_t k1 = super_[s], ncol = super_[s + 1] - k1, r0 = row_begin_[s], nrow = row_begin_[s + 1] - r0;
+    const Const_block Ls(Lx_.data() + block_begin_[s], Index(nrow), Index(ncol), Eigen::OuterStride<>(Index(nrow)));
+    Rhs Y1 = rows_of(Y + k1, ncol, k, static_cast<const Rhs*>(nullptr));
+    Ls.topRows(Index(ncol)).template triangularView<Eigen::Lower>().solveInPlace(Y1);
+    if(nrow == ncol) return;
+    const std::size_t m = nrow - ncol;
+    t.resize(m * k);
+    Eigen::Map<typename Rhs::PlainObject> T(t.data(), Index(m), Index(k));
+    T.noalias() = Ls.bottomRows(Index(m)) * Y1;
+    for(std::size_t j = 0; j < k; ++j)
+      for(std::size_t r = 0; r < m; ++r) Y[j * n_ + rows_[r0 + ncol + r]] -= t[j * m + r];
+  }
+
+  template <class Rhs>
+  void backward_pass(double* Y, std::size_t k, std::vector<double>& t) const
+  {
     const std::size_t ns = super_.size() - 1;
-    const Index kk = Index(k);
-    const Eigen::OuterStride<> column_stride{Index(n_)};
     for(std::size_t s = ns; s-- > 0;)
     {
       const std::size_t k1 = super_[s], ncol = super_[s + 1] - k1, r0 = row_begin_[s], nrow = row_begin_[s + 1] - r0;
       const Const_block Ls(Lx_.data() + block_begin_[s], Index(nrow), Index(ncol), Eigen::OuterStride<>(Index(nrow)));
-      Block Y1(Y + k1, Index(ncol), kk, column_stride);
+      Rhs Y1 = rows_of(Y + k1, ncol, k, static_cast<const Rhs*>(nullptr));
       if(nrow > ncol)
       {
         const std::size_t m = nrow - ncol;
         t.resize(m * k);
         for(std::size_t j = 0; j < k; ++j)
           for(std::size_t r = 0; r < m; ++r) t[j * m + r] = Y[j * n_ + rows_[r0 + ncol + r]];
-        const Eigen::Map<const Eigen::MatrixXd> T(t.data(), Index(m), kk);
+        const Eigen::Map<const typename Rhs::PlainObject> T(t.data(), Index(m), Index(k));
         Y1.noalias() -= Ls.bottomRows(Index(m)).transpose() * T;
       }
       Ls.topRows(Index(ncol)).template triangularView<Eigen::Lower>().transpose().solveInPlace(Y1);
