@@ -327,7 +327,7 @@ PYBIND11_MODULE(_swn, m)
     try
     {
       py::gil_scoped_release release;
-      why = IO::soup_to_mesh_or_problem(input, mesh, info, "");
+      why = IO::soup_to_mesh_or_problem(input, mesh, info, "", o.concurrency);
     }
     catch(const IO::Input_error& e)
     {

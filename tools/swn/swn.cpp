@@ -89,9 +89,10 @@ static const char* usage =
   "  --confidence           mesh.ply gets per-face `confidence` (the flip cost of the face's region) and\n"
   "                         `region`, summary.json every region with its flip cost (default: the\n"
   "                         second-best flip only)\n"
-  "  --sequential           use one thread: factorize the Hodge projection's matrix after the first\n"
-  "                         solve and write w.obj after the other files (default: both on a second\n"
-  "                         thread, during the first solve and while the other files are written)\n"
+  "  --sequential           use one thread: check a large mesh's faces one check after the other,\n"
+  "                         factorize the Hodge projection's matrix after the first solve and write\n"
+  "                         w.obj after the other files (default: each on a second thread, beside\n"
+  "                         the manifold check, the first solve and the other files)\n"
   "  --linear-solver NAME   sparse Cholesky solver: cholmod (SuiteSparse, the default when built with it)\n"
   "                         or ldlt (Eigen SimplicialLDLT)\n"
   "  --quiet                print nothing but errors\n"
@@ -357,7 +358,7 @@ int main(int argc, char** argv)
   try
   {
     auto t0 = std::chrono::steady_clock::now();
-    not_a_mesh = SIO::read_mesh_or_soup(opt.mesh, input, soup, info);
+    not_a_mesh = SIO::read_mesh_or_soup(opt.mesh, input, soup, info, !opt.sequential);
     if(opt.anchor_face > info.number_of_faces)
       throw SIO::Input_error(opt.mesh, 0, "--anchor-face " + std::to_string(opt.anchor_face) + " is out of range (the mesh has " +
                                             std::to_string(info.number_of_faces) + " faces, numbered from 1)");

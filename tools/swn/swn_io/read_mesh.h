@@ -134,28 +134,30 @@ Mesh_read_info read_mesh(const std::string& filename, CGAL::Surface_mesh<Point>&
   \throws Input_error on a missing file or invalid input (indices out of range, repeated vertices, faces with
   fewer than three vertices, non-finite coordinates, no face, a zero-area face, or a face
   of more than three sides with a zero-area triangle in the library's triangulation)
+  \param concurrent as in `soup_to_mesh_or_problem()`
 */
 template <class Point>
 std::string read_mesh_or_soup(std::istream& is, const std::string& fmt, const std::string& filename,
-                              CGAL::Surface_mesh<Point>& mesh, Triangle_soup& soup, Mesh_read_info& info)
+                              CGAL::Surface_mesh<Point>& mesh, Triangle_soup& soup, Mesh_read_info& info,
+                              bool concurrent = true)
 {
   info = Mesh_read_info();
   soup = Triangle_soup();
   mesh.clear();
   read_triangle_soup(is, fmt, filename, soup, info);
-  return soup_to_mesh_or_problem(soup, mesh, info, filename);
+  return soup_to_mesh_or_problem(soup, mesh, info, filename, concurrent);
 }
 
 /// `read_mesh_or_soup()` on the file `filename`, in the format its extension names
 template <class Point>
 std::string read_mesh_or_soup(const std::string& filename, CGAL::Surface_mesh<Point>& mesh, Triangle_soup& soup,
-                              Mesh_read_info& info)
+                              Mesh_read_info& info, bool concurrent = true)
 {
   std::ifstream is = internal::open_input_file(filename, "a mesh file");
   const std::string fmt = mesh_file_format(filename);
   if(fmt != "obj" && fmt != "off" && fmt != "ply" && fmt != "stl")
     throw Input_error(filename, 0, "unknown mesh file extension " + internal::quote(fmt) + " (use .obj, .off, .ply or .stl)");
-  return read_mesh_or_soup(is, fmt, filename, mesh, soup, info);
+  return read_mesh_or_soup(is, fmt, filename, mesh, soup, info, concurrent);
 }
 
 } // namespace IO
