@@ -22,6 +22,7 @@
 #include "swn_io/json.h"
 #include "swn_io/read_curves.h"
 #include "swn_io/read_mesh.h"
+#include "swn_io/second_thread.h"
 #include "swn_io/solver_choice.h"
 #include "swn_io/soup_curves.h"
 #include "swn_io/write_outputs.h"
@@ -212,18 +213,6 @@ Options parse_arguments(int argc, char** argv)
 double seconds_since(std::chrono::steady_clock::time_point t0)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-// runs `task` on a second thread, or, with --sequential (or when no thread can be started), in get()
-template <class Task>
-std::future<void> start_task(bool sequential, Task task)
-{
-  if(!sequential)
-  {
-    try { return std::async(std::launch::async, task); }
-    catch(const std::system_error&) {}
-  }
-  return std::async(std::launch::deferred, task);
 }
 
 
@@ -496,7 +485,7 @@ int main(int argc, char** argv)
       // mesh and the maps are only read from here on). Declared after `out`: if a write fails, the
       // future waits for the other thread before `out` removes the temporary files.
       const std::string w_obj_path = out.path("w.obj");
-      std::future<void> w_obj = start_task(opt.sequential, [&] { SIO::write_w_obj(w_obj_path, mesh, w); });
+      std::future<void> w_obj = SIO::internal::start_task(opt.sequential, [&] { SIO::write_w_obj(w_obj_path, mesh, w); });
       if(opt.labels_per_input_face)
         SIO::write_soup_labels(out.path("labels.txt"), SIO::labels_per_input_face(mesh, labels, cut.face_origin, cut.input_faces));
       else

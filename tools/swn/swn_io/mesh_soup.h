@@ -9,6 +9,7 @@
 #define CGAL_SWN_TOOL_IO_MESH_SOUP_H
 
 #include "swn_io/errors.h"
+#include "swn_io/second_thread.h"
 
 #include <CGAL/Surface_winding_numbers/internal/polygon_tables.h>
 #include <CGAL/Surface_winding_numbers/internal/union_find.h>
@@ -21,7 +22,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <future>
 #include <istream>
 #include <iterator>
 #include <limits>
@@ -529,13 +529,11 @@ std::string soup_to_mesh_or_problem(const Triangle_soup& soup, CGAL::Surface_mes
   };
   // on large inputs they run on a second thread beside the manifold check (chain10, 1.15M faces: the
   // reading step 1.45 -> 1.2 s); a face-area error still comes before the manifold problem
-  std::future<void> beside;
-  if(concurrent && number_of_faces(soup) >= 100000) beside = std::async(std::launch::async, areas_and_statistics);
+  std::future<void> beside = internal::start_task(!concurrent || number_of_faces(soup) < 100000, areas_and_statistics);
   std::vector<std::uint32_t> twin;
   std::size_t line = 0;
   const std::string problem = internal::oriented_manifold_problem(soup, twin, line);
-  if(beside.valid()) beside.get();   // rethrows a face-area error
-  else areas_and_statistics();
+  beside.get();   // rethrows a face-area error
   if(!problem.empty())
     return line > 0 ? file + ":" + std::to_string(line) + ": " + problem : problem;
   build_oriented_mesh(soup, twin, mesh);

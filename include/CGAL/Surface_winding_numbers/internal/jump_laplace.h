@@ -237,26 +237,7 @@ public:
     {
       Vector b = jump_laplace_rhs(c);
       Vector x(static_cast<int>(n_));
-      if(solve_by_halves(b, x)) {}
-      else if(!la_->linear_solver(b, x)) throw Solver_failure("jump Laplace solve failed");
-      else if(update_)   // A* x = b with A* = A + P M P^T: x = A^-1 b - Z M q, (I + Z_T M) q = (A^-1 b)_T
-      {
-        const std::vector<std::size_t>& T = update_->dofs;
-        Eigen::VectorXd yT(Eigen::Index(T.size()));
-        for(std::size_t i = 0; i < T.size(); ++i) yT[Eigen::Index(i)] = x[T[i]];
-        const Eigen::VectorXd Mq = update_->M * update_->K.solve(yT);
-        for(std::size_t j = 0; j < update_->columns.size(); ++j)   // Z = A^-1 P kept by exclude_by_update()
-        {
-          const std::vector<double>& z = *update_->columns[j];
-          const double c = Mq[Eigen::Index(j)];
-          for(std::size_t i = 0; i < n_; ++i) x[i] -= c * z[i];
-        }
-        if(update_->columns.empty())   // too large to keep: x = A^-1 (b - P M q)
-        {
-          for(std::size_t i = 0; i < T.size(); ++i) b[T[i]] -= Mq[Eigen::Index(i)];
-          if(!la_->linear_solver(b, x)) throw Solver_failure("jump Laplace solve failed");
-        }
-      }
+      if(!solve_by_halves(b, x)) solve_by_columns(b, x);
       for(std::size_t v = 0; v < m.nv; ++v)
         if(dof_[v] != npos)
         {
@@ -471,6 +452,30 @@ private:
       (void)b;
       (void)x;
       return false;
+    }
+  }
+
+  // A x = b, or A* x = b for an update without the sparse G of forward_columns(): with A* = A + P M P^T,
+  // x = A^-1 b - Z M q where (I + Z_T M) q = (A^-1 b)_T, with the columns Z = A^-1 P kept by
+  // exclude_by_update(), or x = A^-1 (b - P M q) when they were too large to keep (b is overwritten)
+  void solve_by_columns(Vector& b, Vector& x) const
+  {
+    if(!la_->linear_solver(b, x)) throw Solver_failure("jump Laplace solve failed");
+    if(!update_) return;
+    const std::vector<std::size_t>& T = update_->dofs;
+    Eigen::VectorXd yT(Eigen::Index(T.size()));
+    for(std::size_t i = 0; i < T.size(); ++i) yT[Eigen::Index(i)] = x[T[i]];
+    const Eigen::VectorXd Mq = update_->M * update_->K.solve(yT);
+    for(std::size_t j = 0; j < update_->columns.size(); ++j)
+    {
+      const std::vector<double>& z = *update_->columns[j];
+      const double c = Mq[Eigen::Index(j)];
+      for(std::size_t i = 0; i < n_; ++i) x[i] -= c * z[i];
+    }
+    if(update_->columns.empty())
+    {
+      for(std::size_t i = 0; i < T.size(); ++i) b[T[i]] -= Mq[Eigen::Index(i)];
+      if(!la_->linear_solver(b, x)) throw Solver_failure("jump Laplace solve failed");
     }
   }
 

@@ -205,10 +205,8 @@ private:
   // block and solves for the rest of its rows.
   bool factorize(const EigenMatrix& A)
   {
-    const std::size_t ns = super_.size() - 1, none = std::size_t(-1);
-    const std::vector<std::size_t>& inverse = inverse_;
-    const std::vector<std::size_t>& supernode_of = supernode_of_;
-    std::vector<std::size_t> map(n_), next(ns, none), head(ns, none), position(ns, 0);
+    const std::size_t ns = super_.size() - 1;
+    std::vector<std::size_t> map(n_), next(ns, none_), head(ns, none_), position(ns, 0);
     std::vector<std::size_t> relative;
     Eigen::MatrixXd C;
     for(std::size_t s = 0; s < ns; ++s)
@@ -221,10 +219,10 @@ private:
       for(std::size_t k = k1; k < k2; ++k)
         for(typename EigenMatrix::InnerIterator it(A, Index(perm_[k])); it; ++it)
         {
-          const std::size_t i = inverse[std::size_t(it.row())];
+          const std::size_t i = inverse_[std::size_t(it.row())];
           if(i >= k) X[map[i] + (k - k1) * nrow] += it.value();
         }
-      for(std::size_t d = head[s]; d != none;)
+      for(std::size_t d = head[s]; d != none_;)
       {
         const std::size_t d_next = next[d];
         const std::size_t d0 = row_begin_[d], d_end = row_begin_[d + 1], d_nrow = d_end - d0, d_ncol = super_[d + 1] - super_[d];
@@ -246,7 +244,7 @@ private:
         position[d] = last - d0;
         if(last < d_end)
         {
-          const std::size_t t = supernode_of[rows_[last]];
+          const std::size_t t = supernode_of_[rows_[last]];
           next[d] = head[t];
           head[t] = d;
         }
@@ -261,7 +259,7 @@ private:
         Ls.topRows(Index(ncol)).template triangularView<Eigen::Lower>().transpose().template solveInPlace<Eigen::OnTheRight>(
           Ls.bottomRows(Index(nrow - ncol)));
         position[s] = ncol;
-        const std::size_t t = supernode_of[rows_[r0 + ncol]];
+        const std::size_t t = supernode_of_[rows_[r0 + ncol]];
         next[s] = head[t];
         head[t] = s;
       }
