@@ -140,7 +140,7 @@ struct Certificate_workspace
   std::vector<Int> lower, upper, x0, supply;
   std::unique_ptr<Warm_push_relabel<Int>> push_relabel;
   std::unique_ptr<Boykov_kolmogorov_flow<Int>> boykov_kolmogorov;
-  std::unique_ptr<Adjacency> adjacency;
+  std::shared_ptr<const Adjacency> adjacency;
 };
 
 // One level of the hierarchy of contracted problems (level 0: the problem itself).
@@ -159,7 +159,7 @@ struct Level
   const Adjacency& adjacency()
   {
     if(!workspace) workspace.reset(new Certificate_workspace());
-    if(!workspace->adjacency) workspace->adjacency.reset(new Adjacency(n, arcs));
+    if(!workspace->adjacency) workspace->adjacency = std::make_shared<const Adjacency>(n, arcs);
     return *workspace->adjacency;
   }
 };

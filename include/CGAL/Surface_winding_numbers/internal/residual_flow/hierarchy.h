@@ -18,18 +18,26 @@ namespace Surface_winding_numbers {
 namespace internal {
 namespace residual_flow {
 
+// lv.component from a numbering of the connected components (node -> 0, 1, ...): each named by its
+// first node, as find_components() names them
+inline void name_components(Level& lv, const std::vector<std::size_t>& component, std::size_t count)
+{
+  std::vector<std::size_t> first_node(count, npos);
+  lv.component.resize(lv.n);
+  for(std::size_t v = 0; v < lv.n; ++v)
+  {
+    if(first_node[component[v]] == npos) first_node[component[v]] = v;
+    lv.component[v] = first_node[component[v]];
+  }
+}
+
 // lv.component: every node's connected component, named by its first node
 inline void find_components(Level& lv)
 {
   const Adjacency adj(lv.n, lv.arcs);
   std::vector<std::size_t> piece(lv.n, npos);
-  std::vector<std::size_t> first_node(number_pieces(lv.n, lv.arcs, adj, [](std::size_t) { return true; }, piece, 0), npos);
-  lv.component.resize(lv.n);
-  for(std::size_t v = 0; v < lv.n; ++v)
-  {
-    if(first_node[piece[v]] == npos) first_node[piece[v]] = v;
-    lv.component[v] = first_node[piece[v]];
-  }
+  const std::size_t count = number_pieces(lv.n, lv.arcs, adj, [](std::size_t) { return true; }, piece, 0);
+  name_components(lv, piece, count);
 }
 
 // Clusters of at most `cap` nodes grown breadth first over contractible arcs; a node joins a cluster

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,7 @@ struct Integer_problem
   std::vector<double> sigma0;              // node -> its shift in the gauge (jump 0 on the forest)
   std::vector<std::size_t> component;      // node -> its connected component
   std::vector<std::size_t> roots;          // component -> its root node
+  std::shared_ptr<const Adjacency> adjacency;   // node -> its arcs (the warm start's level shares it)
 };
 
 inline bool check_residual_problem(const Residual_problem& P, Context& ctx)
@@ -51,14 +53,14 @@ inline bool check_residual_problem(const Residual_problem& P, Context& ctx)
   const double inf = std::numeric_limits<double>::infinity();
   for(std::size_t a = 0; a < na; ++a)
   {
-    const std::string at = " at arc " + std::to_string(a);
-    if(P.left[a] >= nf || P.right[a] >= nf) return ctx.fail("the residual problem has a face index out of range" + at);
-    if(!std::isfinite(P.s[a])) return ctx.fail("the residual problem has a non-finite jump s" + at);
+    const auto at = [a] { return " at arc " + std::to_string(a); };   // built on failure only
+    if(P.left[a] >= nf || P.right[a] >= nf) return ctx.fail("the residual problem has a face index out of range" + at());
+    if(!std::isfinite(P.s[a])) return ctx.fail("the residual problem has a non-finite jump s" + at());
     if(!(P.cost[a] >= 0) || !std::isfinite(P.cost[a]))
-      return ctx.fail("the residual problem has a negative or non-finite cost" + at);
+      return ctx.fail("the residual problem has a negative or non-finite cost" + at());
     if(std::isnan(P.lower[a]) || std::isnan(P.upper[a]) || !(P.lower[a] <= P.upper[a]) || P.lower[a] == inf ||
        P.upper[a] == -inf)
-      return ctx.fail("the residual problem has empty or invalid bounds" + at);
+      return ctx.fail("the residual problem has empty or invalid bounds" + at());
   }
   for(std::size_t f : P.gauge_faces)
     if(f >= nf) return ctx.fail("the residual problem has a gauge face out of range");
@@ -163,7 +165,8 @@ inline bool build_integer_problem(const Residual_problem& P, Context& ctx, Integ
   }
 
   // gauge: jump 0 on a breadth-first spanning forest
-  const Adjacency adj(nn, ip.arcs);
+  ip.adjacency = std::make_shared<const Adjacency>(nn, ip.arcs);
+  const Adjacency& adj = *ip.adjacency;
   ip.sigma0.assign(nn, 0.);
   ip.component.assign(nn, npos);
   ip.roots.clear();
@@ -208,17 +211,19 @@ inline bool build_integer_problem(const Residual_problem& P, Context& ctx, Integ
     return ctx.fail("the residual problem's jumps are too large for the 64-bit integer scaling (largest |s| + |bound| " +
                     std::to_string(B) + " on " + std::to_string(nn) + " nodes)");
   const int m = wsum > 0 ? (std::max)(-1000, (std::min)(1000, int(std::floor(57. - std::log2(wsum))))) : 0;
-  auto to_int = [](double x, int e) { return Int(std::llround(std::ldexp(x, e))); };
+  // x 2^e rounded (a product by a power of two: exact, as ldexp, and cheaper)
+  const double two_k = std::ldexp(1., k), two_m = std::ldexp(1., m);
+  auto to_int = [](double x, double two_e) { return Int(std::llround(x * two_e)); };
   Int finite_caps = 0;
   ctx.stats.nonzero_cost_arcs = 0;
   for(std::size_t i = 0; i < kept.size(); ++i)
   {
     const std::size_t a = kept[i];
     Int_arc& e = ip.arcs[i];
-    e.sh = to_int(st[i], k);
-    e.w = to_int(P.cost[a], m);
-    e.lo = e.has_lo ? to_int(P.lower[a], k) : 0;
-    e.up = e.has_up ? to_int(P.upper[a], k) : 0;
+    e.sh = to_int(st[i], two_k);
+    e.w = to_int(P.cost[a], two_m);
+    e.lo = e.has_lo ? to_int(P.lower[a], two_k) : 0;
+    e.up = e.has_up ? to_int(P.upper[a], two_k) : 0;
     finite_caps += 2 * e.w;
     if(e.sh != 0) ++ctx.stats.nonzero_cost_arcs;
   }
@@ -237,8 +242,9 @@ inline bool recover_sigma(const Residual_problem& P, const Integer_problem& ip, 
   const auto t0 = std::chrono::steady_clock::now();
   const std::size_t nf = P.number_of_faces;
   std::vector<double> node_sigma(ip.nodes);
+  const double unit = std::ldexp(1., -ip.k);
   for(std::size_t v = 0; v < ip.nodes; ++v)
-    node_sigma[v] = ip.sigma0[v] + std::ldexp(double(pi[v] - pi[ip.roots[ip.component[v]]]), -ip.k);
+    node_sigma[v] = ip.sigma0[v] + double(pi[v] - pi[ip.roots[ip.component[v]]]) * unit;
   sigma.resize(nf);
   for(std::size_t f = 0; f < nf; ++f) sigma[f] = node_sigma[ip.face_node[f]] + ip.face_offset[f];
   std::vector<double> shift(ip.roots.size(), 0.);

@@ -58,16 +58,17 @@ inline void keep_answer(Warm_state& w, const Integer_problem& ip, const std::vec
   w.face_node = ip.face_node;
   w.ends.resize(2 * ip.arcs.size());
   w.kink.resize(ip.arcs.size());
+  const double unit = std::ldexp(1., -ip.k);
   for(std::size_t i = 0; i < ip.arcs.size(); ++i)
   {
     const Int_arc& e = ip.arcs[i];
     w.ends[2 * i] = e.L;
     w.ends[2 * i + 1] = e.R;
     const Int J = tension(e, pi);
-    w.kink[i] = at_kink(e, J) ? std::ldexp(double(J), -ip.k) : std::numeric_limits<double>::quiet_NaN();
+    w.kink[i] = at_kink(e, J) ? double(J) * unit : std::numeric_limits<double>::quiet_NaN();
   }
   w.shift.resize(ip.nodes);
-  for(std::size_t v = 0; v < ip.nodes; ++v) w.shift[v] = ip.sigma0[v] + std::ldexp(double(pi[v]), -ip.k);
+  for(std::size_t v = 0; v < ip.nodes; ++v) w.shift[v] = ip.sigma0[v] + double(pi[v]) * unit;
   w.x = std::move(x);
   w.m = m;
   w.valid = true;
@@ -88,7 +89,7 @@ inline std::vector<Int> warm_potentials(const Warm_state& w, const Integer_probl
       target[i] = Int(std::llround(w.kink[i] * scale));
       use[i] = at_kink(ip.arcs[i], target[i]) ? 1 : 0;
     }
-  const Adjacency adj(n, ip.arcs);
+  const Adjacency& adj = *ip.adjacency;
   std::vector<Int> pi(n, 0);
   std::vector<char> seen(n, 0);
   std::vector<std::size_t> queue;
@@ -120,7 +121,10 @@ inline bool warm_solve(Context& ctx, Integer_problem& ip, const Warm_state& w, s
   Level& lv = levels[0];
   lv.n = ip.nodes;
   lv.arcs.swap(ip.arcs);
-  find_components(lv);
+  // the integer problem's adjacency and components (its gauge forest spans them)
+  lv.workspace.reset(new Certificate_workspace());
+  lv.workspace->adjacency = ip.adjacency;
+  name_components(lv, ip.component, ip.roots.size());
   normalize(lv, pi);
   const int dm = ctx.stats.capacity_exponent - w.m;
   lv.x.resize(w.x.size());
