@@ -6,7 +6,11 @@
 For a case written by swn_bench_gen (meta.json, curve.txt, planted.txt, labels_gt.txt), closes the gaps of the
 input as the package's shortest_path_completion() does (each interior endpoint where curves arrive, in vertex
 order, joined to the nearest endpoint where curves depart, or failing that to the border, by a Dijkstra search
-over the interior edges off the curve),
+over the interior edges off the curve; the package takes the endpoints in the order of its tables, renumbered
+along a Morton curve when the file's numbering is scattered (internal/locality_order.h), so its pairing and paths
+can differ from this script's: on the paper suite's 174 cases with handles this script's completion is in the
+truth's class in 130, the package's in 152, benchmark/beyond_eq11.md; the option closes the
+gaps by directed_completion()),
 and prints per case: the completion's edges, the endpoints left open, the edges of the deleted runs, the edges
 where the completed input differs from the full truth (J W_gt + planted loops), and whether the two are
 homologous (their difference is J F for an integer face function F). Where they are, the named parameter

@@ -503,3 +503,33 @@ TEST(BeyondEq11, CompletedHomologyClassChangesNothingWithoutGaps)
   for(const auto& fl : paper.labels) inside += fl.second != paper.labels.begin()->second;
   EXPECT_EQ(inside, 2 * 5 * 4);
 }
+
+TEST(BeyondEq11, DirectedCompletionContinuesTheCurveRoundTheHandle)
+{
+  // 4 (then 5) of the 12 edges of a meridian drawn upwards from j = 0. The shortest closure of the gap
+  // backs out of the upper end and runs down beside the drawn piece (5, then 6 edges: the completed
+  // curve bounds a sliver, the class of nothing); the directed completion leaves the upper end upwards
+  // and reaches the lower end from below: the rest of the meridian (8, then 7 edges), the meridian's
+  // class. With the option, G is the whole meridian (12 edges, upwards).
+  const int nu = 24, nv = 12, i0 = 12;
+  const Torus_tables torus(nu, nv);
+  const SI::Mesh_tables& t = torus.tables();
+  for(int drawn : {4, 5})
+  {
+    const std::vector<double> chain = torus.chain({meridian_piece(torus.vs, nv, i0, 0, drawn)});
+    const std::vector<double> rest = torus.chain({meridian_piece(torus.vs, nv, i0, drawn, nv)});
+    const std::vector<double> shortest = SI::shortest_path_completion(t, chain), directed = SI::directed_completion(t, chain);
+    EXPECT_EQ(directed, rest);
+    // the shortest closure: drawn + 1 edges, none of the gap's (a closure round the tube needs at least
+    // nv - drawn > drawn + 1 edges)
+    EXPECT_EQ(std::count_if(shortest.begin(), shortest.end(), [](double x) { return x != 0; }), drawn + 1);
+    for(std::size_t e = 0; e < t.ne; ++e) EXPECT_FALSE(rest[e] != 0 && shortest[e] != 0);
+    std::vector<int> completed(t.ne);
+    for(std::size_t e = 0; e < t.ne; ++e) completed[e] = int(chain[e] + shortest[e]);
+    EXPECT_TRUE(SI::is_relatively_closed(t, completed));
+    Half_meridian c(drawn);
+    ASSERT_TRUE(c.solve(SWN::parameters::completed_homology_class(true)));
+    EXPECT_EQ(c.G_up_the_meridian(), std::make_pair(int(c.nv), 0));
+    EXPECT_EQ(c.distinct_labels(), 1u);
+  }
+}

@@ -370,13 +370,13 @@ public:
   }
 
   // Beyond Eq. 11 (issue 46; named parameter completed_homology_class): the closed 1-form that the
-  // residual problem integrates, taken from the curve with its gaps closed by shortest paths (the
-  // Darboux derivative of its jump-harmonic function, Eq. 5; closed, with the integer periods of the
-  // completed curve) instead of the harmonic part of the broken curve's. `gamma` is returned where the
-  // completion leaves endpoints.
+  // residual problem integrates, taken from the curve with its gaps closed by shortest paths that follow
+  // the curve's direction at both ends (directed_completion(); the Darboux derivative of its
+  // jump-harmonic function, Eq. 5; closed, with the integer periods of the completed curve) instead of
+  // the harmonic part of the broken curve's. `gamma` is returned where the completion leaves endpoints.
   std::vector<double> completed_chain_form(const std::vector<double>& chain, const std::vector<double>& gamma)
   {
-    std::vector<double> completed = shortest_path_completion(m_, chain);
+    std::vector<double> completed = directed_completion(m_, chain);
     for(std::size_t e = 0; e < m_.ne; ++e) completed[e] += chain[e];
     const std::vector<char> endpoint = interior_endpoints(m_, completed);
     if(std::find(endpoint.begin(), endpoint.end(), 1) != endpoint.end()) return gamma;

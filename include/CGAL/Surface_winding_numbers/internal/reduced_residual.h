@@ -25,7 +25,10 @@ namespace internal {
 // shortest path, by edge length, over the interior edges that are not on the curve. Returns the
 // completion chain (to be added to Gamma). Unlike the authors' code, the Dijkstra weights are the
 // edge lengths (their code gives infinite weight to the edges off the curve, a documented slip).
-inline std::vector<double> shortest_path_completion(const Mesh_tables& m, const std::vector<double>& chain)
+// `weight(p, v, x, e, x_departs)`: the length of edge e from v to x on a path from p (infinite: not taken),
+// x_departs when x is an interior endpoint where curves depart.
+template <class Weight>
+std::vector<double> shortest_path_completion(const Mesh_tables& m, const std::vector<double>& chain, Weight weight)
 {
   std::vector<double> d = chain_boundary(m, chain);
   std::vector<double> completion(m.ne, 0.);
@@ -63,7 +66,9 @@ inline std::vector<double> shortest_path_completion(const Mesh_tables& m, const 
         if(v != p && m.vertex_on_border[v] && border == npos) border = v;
         for(const auto& ne : adjacent[v])
         {
-          const double nd = dist[v] + m.edge_length(ne.second);
+          const double w = weight(p, v, ne.first, ne.second, is_target(ne.first));
+          if(!(w < std::numeric_limits<double>::infinity())) continue;
+          const double nd = dist[v] + w;
           if(nd < dist[ne.first]) { dist[ne.first] = nd; pred_edge[ne.first] = ne.second; pred_vertex[ne.first] = v; queue.emplace(nd, ne.first); }
         }
       }
@@ -80,6 +85,41 @@ inline std::vector<double> shortest_path_completion(const Mesh_tables& m, const 
     }
   }
   return completion;
+}
+
+inline std::vector<double> shortest_path_completion(const Mesh_tables& m, const std::vector<double>& chain)
+{
+  return shortest_path_completion(m, chain, [&m](std::size_t, std::size_t, std::size_t, std::size_t e, bool) { return m.edge_length(e); });
+}
+
+// The completion of the named parameter completed_homology_class (issue 46): as shortest_path_completion(),
+// but following the curve's direction at both ends of a gap: a path leaves its arrival endpoint p forward
+// (its first edge at an acute angle to the direction the curve arrives in) and reaches a departure endpoint
+// from behind (its last edge at an acute angle to the direction the curve departs in). The direction at an
+// endpoint is the sum of the unit directions of travel of the curve edges there.
+inline std::vector<double> directed_completion(const Mesh_tables& m, const std::vector<double>& chain)
+{
+  const std::vector<double> d = chain_boundary(m, chain);
+  std::vector<double> direction(3 * m.nv, 0.);
+  for(std::size_t e = 0; e < m.ne; ++e)
+  {
+    if(std::abs(chain[e]) <= chain_tolerance) continue;
+    const std::size_t a = m.ev[2 * e], b = m.ev[2 * e + 1];
+    const double unit = (chain[e] > 0 ? 1. : -1.) / (m.edge_length(e) > 0 ? m.edge_length(e) : 1.);
+    for(std::size_t end : {a, b})
+      if(std::abs(d[end]) > chain_tolerance)
+        for(int k = 0; k < 3; ++k) direction[3 * end + k] += unit * (m.point(b)[k] - m.point(a)[k]);
+  }
+  // (to - from) . direction at `at` > 0
+  auto ahead = [&](std::size_t from, std::size_t to, std::size_t at) {
+    double s = 0;
+    for(int k = 0; k < 3; ++k) s += (m.point(to)[k] - m.point(from)[k]) * direction[3 * at + k];
+    return s > 0;
+  };
+  return shortest_path_completion(m, chain, [&](std::size_t p, std::size_t v, std::size_t x, std::size_t e, bool x_departs) {
+    if((v == p && !ahead(p, x, p)) || (x_departs && !ahead(v, x, x))) return std::numeric_limits<double>::infinity();
+    return m.edge_length(e);
+  });
 }
 
 // The reduced residual problem (paper Sec. 6): after completing the gaps, the faces are grouped
