@@ -32,7 +32,7 @@ namespace SWN = CGAL::Surface_winding_numbers;
 
 // The paper's sketching use (Sec. 5.3) on a torus of nu x nv quads (2 nu nv faces): a meridian with a
 // gap, kept, and a square stroke with a gap, moved by one step along the torus before each solve. Prints
-// each solve and checks its labels and G against a fresh solver's.
+// each solve, then checks every stroke's labels and G against a fresh surface_winding_numbers() call.
 int sketch(int nu, int nv, int n)
 {
   Mesh m;
@@ -52,13 +52,11 @@ int sketch(int nu, int nv, int n)
       m.add_face(at(i, j), at(i + 1, j + 1), at(i, j + 1));
     }
   SWN::Surface_winding_numbers_solver<Mesh> solver(m);
-  auto labels = get(CGAL::dynamic_face_property_t<int>(), m);
-  auto G = get(CGAL::dynamic_edge_property_t<int>(), m);
   const int side = nv / 4;
-  for(int k = 0; k < n; ++k)
-  {
-    auto chain = get(CGAL::dynamic_edge_property_t<int>(), m);
-    for(auto e : edges(m)) put(chain, e, 0);
+  // the curves of stroke k
+  const auto chain_of = [&](int k) {
+    std::vector<int> chain(num_edges(m), 0);
+    const auto chain_map = CGAL::make_property_map(chain);
     std::vector<Mesh::Vertex_index> meridian, stroke;
     for(int j = 1; j <= nv - 2; ++j) meridian.push_back(at(nu / 8, j));   // a gap of 3 edges
     const int i0 = nu / 2 + k, j0 = nv / 4;
@@ -66,25 +64,39 @@ int sketch(int nu, int nv, int n)
     for(int t = 0; t < side; ++t) stroke.push_back(at(i0 + side, j0 + t));
     for(int t = 0; t < side; ++t) stroke.push_back(at(i0 + side - t, j0 + side));
     for(int t = 0; t < side - 1; ++t) stroke.push_back(at(i0, j0 + side - t));   // a gap of 1 edge
-    SWN::add_vertex_polyline_to_chain(m, meridian, chain);
-    SWN::add_vertex_polyline_to_chain(m, stroke, chain);
+    SWN::add_vertex_polyline_to_chain(m, meridian, chain_map);
+    SWN::add_vertex_polyline_to_chain(m, stroke, chain_map);
+    return chain;
+  };
+  // the strokes one after the other on one solver, as a sketching session runs them (the fresh solves
+  // that check them come afterwards: between re-solves they would leave the allocator's heap grown)
+  std::vector<std::vector<int>> labels{std::size_t(n)}, G{std::size_t(n)};
+  for(int k = 0; k < n; ++k)
+  {
+    std::vector<int> chain = chain_of(k);
+    labels[std::size_t(k)].assign(num_faces(m), 0);
+    G[std::size_t(k)].assign(num_edges(m), 0);
     const auto t0 = std::chrono::steady_clock::now();
-    const bool ok = solver.solve(chain, labels, SWN::parameters::nonbounding_chain_map(G));
+    const bool ok = solver.solve(CGAL::make_property_map(chain), CGAL::make_property_map(labels[std::size_t(k)]),
+                                 SWN::parameters::nonbounding_chain_map(CGAL::make_property_map(G[std::size_t(k)])));
     const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const SWN::Solve_report& r = solver.report();
-    // a fresh solve of the same curves
-    auto fresh_labels = get(CGAL::dynamic_face_property_t<int>(), m);
-    auto fresh_G = get(CGAL::dynamic_edge_property_t<int>(), m);
-    const auto t1 = std::chrono::steady_clock::now();
-    const bool fresh_ok = CGAL::surface_winding_numbers(m, chain, fresh_labels, SWN::parameters::nonbounding_chain_map(fresh_G));
-    const double t_fresh = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
-    bool same = ok && fresh_ok;
-    for(auto f : faces(m)) same = same && get(labels, f) == get(fresh_labels, f);
-    for(auto e : edges(m)) same = same && get(G, e) == get(fresh_G, e);
     std::cout << "stroke " << k << (ok ? " ok" : " failed") << ": jump Laplace " << r.time_jump_laplace << " s (update rank "
               << r.jump_laplacian_update_rank << "), Hodge " << r.time_hodge << " s, residual " << r.time_residual
-              << " s, second solve " << r.time_second_solve << " s (warm " << r.residual_warm_started << "), labels " << r.time_labels << " s, whole " << t
-              << " s; fresh solve " << t_fresh << " s, " << (same ? "same" : "DIFFERENT") << " labels and G\n";
+              << " s, second solve " << r.time_second_solve << " s (warm " << r.residual_warm_started << "), labels "
+              << r.time_labels << " s, whole " << t << " s\n";
+    if(!ok) return 1;
+  }
+  for(int k = 0; k < n; ++k)
+  {
+    std::vector<int> chain = chain_of(k);
+    std::vector<int> fresh_labels(num_faces(m), 0), fresh_G(num_edges(m), 0);
+    const auto t1 = std::chrono::steady_clock::now();
+    const bool fresh_ok = CGAL::surface_winding_numbers(m, CGAL::make_property_map(chain), CGAL::make_property_map(fresh_labels),
+                                                        SWN::parameters::nonbounding_chain_map(CGAL::make_property_map(fresh_G)));
+    const double t_fresh = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+    const bool same = fresh_ok && fresh_labels == labels[std::size_t(k)] && fresh_G == G[std::size_t(k)];
+    std::cout << "stroke " << k << ": fresh solve " << t_fresh << " s, " << (same ? "same" : "DIFFERENT") << " labels and G\n";
     if(!same) return 1;
   }
   return 0;
