@@ -522,6 +522,22 @@ TEST(LemonResidual, WarmStartsReachTheOptimumOfEachNewProblem)
     EXPECT_FALSE(warm.statistics().warm_started);
     ASSERT_TRUE(warm.solve_residual(Q, sigma)) << warm.error();
     EXPECT_TRUE(warm.statistics().warm_started);   // the same problem again: its own optimum, certified at once
+    // the solver keeps the last problem's storage and adjacency for the next one: the same problem with
+    // its faces renumbered (as many nodes and arcs, joined otherwise) is another graph, with the same optimum
+    SWN::Residual_problem R = Q;
+    const auto rotated = [&](std::size_t f) { return (f + 1) % Q.number_of_faces; };
+    for(std::size_t a = 0; a < Q.number_of_arcs(); ++a)
+    {
+      R.left[a] = rotated(Q.left[a]);
+      R.right[a] = rotated(Q.right[a]);
+    }
+    for(std::size_t& f : R.gauge_faces) f = rotated(f);
+    std::vector<double> rho;
+    ASSERT_TRUE(warm.solve_residual(R, rho)) << warm.error();
+    EXPECT_FALSE(warm.statistics().warm_started);
+    EXPECT_TRUE(warm.statistics().certified);
+    EXPECT_LE(R.max_violation(rho), 1e-9);
+    EXPECT_NEAR(R.objective(rho), Q.objective(sigma), 1e-9 * (1 + Q.objective(sigma)));
   }
   // off by default
   EXPECT_FALSE(Options().warm_start);

@@ -145,7 +145,7 @@ private:
     sigma.assign(P.number_of_faces, 0.);
     if(!RF::check_residual_problem(P, ctx_)) return false;
     if(P.number_of_faces == 0) { st.certified = true; return true; }
-    RF::Integer_problem ip;
+    RF::Integer_problem& ip = problem_;
     if(!RF::build_integer_problem(P, ctx_, ip)) return false;
     st.time_build = RF::seconds_since(t_build);
 
@@ -177,15 +177,20 @@ private:
         return ctx_.fail("LEMON residual solver: " + ctx_.error);
     }
     st.time_solve = RF::seconds_since(t_solve);
+    std::unique_ptr<RF::Certificate_workspace> workspace = std::move(warm_.workspace);   // kept by a warm solve
     warm_.clear();
     if(!RF::recover_sigma(P, ip, pi, ctx_, sigma)) return false;
     if(ctx_.options.warm_start && st.certified && x.size() == ip.arcs.size())
+    {
       RF::keep_answer(warm_, ip, pi, std::move(x), st.capacity_exponent);
+      if(st.warm_started) warm_.workspace = std::move(workspace);   // the same graph
+    }
     return true;
   }
 
   internal::residual_flow::Context ctx_;
   internal::residual_flow::Warm_state warm_;   // the last answer (Options::warm_start)
+  internal::residual_flow::Integer_problem problem_;   // the last problem: its storage serves the next
 };
 
 } // namespace Surface_winding_numbers

@@ -121,7 +121,7 @@ inline bool contract_fixed_arcs(const Residual_problem& P, Context& ctx, Integer
   return true;
 }
 
-// Builds the integer problem: contraction, then the remaining arcs over the nodes, a breadth-first
+// Builds the integer problem (ip: empty, or the last one, whose storage is reused): contraction, then the remaining arcs over the nodes, a breadth-first
 // spanning forest along which the jump is made 0 (components rooted at gauge faces first, so that
 // only the arcs that close a nonzero cycle of s keep a nonzero cost), and the scaling: jumps and
 // bounds by 2^k with k the largest exponent up to 42 for which no node potential can exceed 2^59,
@@ -154,18 +154,27 @@ inline bool build_integer_problem(const Residual_problem& P, Context& ctx, Integ
   if(!(constant_violation <= ctx.options.feasibility_tolerance))
     return ctx.fail("the residual problem is infeasible: an arc whose faces are joined by fixed arcs violates its bounds by " +
                     std::to_string(constant_violation));
+  // ip may hold the last problem (a solver's re-solve): its adjacency serves again if the arcs join
+  // the same nodes
+  bool same_arcs = ip.adjacency && ip.adjacency->first.size() == nn + 1 && ip.arcs.size() == kept.size();
   ip.arcs.resize(kept.size());
   for(std::size_t i = 0; i < kept.size(); ++i)
   {
     Int_arc& e = ip.arcs[i];
-    e.L = ip.face_node[P.left[kept[i]]];
-    e.R = ip.face_node[P.right[kept[i]]];
+    const std::size_t L = ip.face_node[P.left[kept[i]]], R = ip.face_node[P.right[kept[i]]];
+    same_arcs = same_arcs && e.L == L && e.R == R;
+    e.L = L;
+    e.R = R;
     e.has_lo = std::isfinite(P.lower[kept[i]]);
     e.has_up = std::isfinite(P.upper[kept[i]]);
   }
 
   // gauge: jump 0 on a breadth-first spanning forest
-  ip.adjacency = std::make_shared<const Adjacency>(nn, ip.arcs);
+  if(!same_arcs)
+  {
+    ip.adjacency.reset();   // not stale if the next line throws
+    ip.adjacency = std::make_shared<const Adjacency>(nn, ip.arcs);
+  }
   const Adjacency& adj = *ip.adjacency;
   ip.sigma0.assign(nn, 0.);
   ip.component.assign(nn, npos);

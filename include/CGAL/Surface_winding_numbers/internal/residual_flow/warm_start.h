@@ -38,6 +38,9 @@ struct Warm_state
   std::vector<double> shift;            // node -> its shift sigma0 + pi / 2^k
   std::vector<Int> x;                   // the certificate's flow, in units of 2^-m
   int m = 0;
+  // the finest level's certificate workspace of the last warm solve (its maximum flow's graph and
+  // buffers), for the next warm solve on the same graph: building them anew cost a re-solve page faults
+  std::unique_ptr<Certificate_workspace> workspace;
 
   void clear() { *this = Warm_state(); }
   // the same graph: same contraction, same arcs in the same order
@@ -112,18 +115,24 @@ inline std::vector<Int> warm_potentials(const Warm_state& w, const Integer_probl
   return pi;
 }
 
-// The finest level alone, from the kept answer: true with pi certified optimal and x its flow; false
+// The finest level alone, from the kept answer: true with pi certified optimal and x its flow (and the
+// level's workspace kept in w for the next warm solve); false
 // (ctx.error set on errors only) if the certificate was not reached.
-inline bool warm_solve(Context& ctx, Integer_problem& ip, const Warm_state& w, std::vector<Int>& pi, std::vector<Int>& x)
+inline bool warm_solve(Context& ctx, Integer_problem& ip, Warm_state& w, std::vector<Int>& pi, std::vector<Int>& x)
 {
   pi = warm_potentials(w, ip);
   std::vector<Level> levels(1);
   Level& lv = levels[0];
   lv.n = ip.nodes;
   lv.arcs.swap(ip.arcs);
-  // the integer problem's adjacency and components (its gauge forest spans them)
-  lv.workspace.reset(new Certificate_workspace());
-  lv.workspace->adjacency = ip.adjacency;
+  // the last warm solve's workspace (the same graph: w matches ip), else one with the integer
+  // problem's adjacency; the components from the integer problem's (its gauge forest spans them)
+  lv.workspace = std::move(w.workspace);
+  if(!lv.workspace)
+  {
+    lv.workspace.reset(new Certificate_workspace());
+    lv.workspace->adjacency = ip.adjacency;
+  }
   name_components(lv, ip.component, ip.roots.size());
   normalize(lv, pi);
   const int dm = ctx.stats.capacity_exponent - w.m;
@@ -141,6 +150,7 @@ inline bool warm_solve(Context& ctx, Integer_problem& ip, const Warm_state& w, s
   lv.arcs.swap(ip.arcs);
   if(!certified) return false;
   x.swap(lv.x);
+  w.workspace = std::move(lv.workspace);
   return true;
 }
 
