@@ -87,11 +87,9 @@ py::dict put_on_mesh(Mesh& mesh, const Polylines_3& polylines, std::optional<dou
   for(Mesh::Edge_index e : mesh.edges()) values[std::size_t(e)] = chain[e];
   mesh.remove_property_map(chain);
   const py::tuple curve = chain_halfedges(mesh, values);
-  if(py::len(curve[1]) == 0 && r.border_pieces > 0)
-    throw py::value_error("no curve left on the surface: it runs along the border of the mesh (" +
-                          std::to_string(r.border_pieces) + " pieces dropped); curves may end on the border, not run along it");
   if(py::len(curve[1]) == 0)
-    throw py::value_error("no curve on the surface (every point is too far from it, or every ray misses it)");
+    throw py::value_error(IO::no_curve_left_reason(r.points, r.points_off_surface, r.border_pieces, r.curves, r.failed_walks,
+                                                   projection_tolerance ? "projection_tolerance" : "the mean edge length"));
   std::vector<std::int64_t> face_origin(mesh.number_of_faces());
   for(Mesh::Face_index f : mesh.faces()) face_origin[std::size_t(f)] = std::int64_t(origin[f]);
   mesh.remove_property_map(origin);

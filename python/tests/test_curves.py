@@ -105,6 +105,9 @@ def test_errors():
     V, F = grid_disk(6)
     with pytest.raises(ValueError, match="no curve on the surface"):
         swn.polylines_to_chain(V, F, [[[0.2, 0.2, 5], [0.6, 0.6, 5]]])
+    # a closed stroke inside one face: it crosses no edge, and the error says so
+    with pytest.raises(ValueError, match="no curve left on the surface: the polylines cross no edge of the mesh"):
+        swn.polylines_to_chain(V, F, [np.array([[0.2, 0.1, 0], [0.6, 0.2, 0], [0.7, 0.5, 0], [0.2, 0.1, 0]]) / 6])
     with pytest.raises(ValueError, match=r"polylines\[0\] must be a \(k, 3\) array of points"):
         swn.polylines_to_chain(V, F, [[[0.2, 0.2], [0.6, 0.6]]])
     with pytest.raises(ValueError, match=r"polylines\[0\]: point 1 has a non-finite coordinate"):

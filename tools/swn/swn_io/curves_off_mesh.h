@@ -268,20 +268,9 @@ std::vector<Off_mesh_report> add_off_mesh_curves(Cut_result<Point>& cut, const O
     {
       points += r.points; off += r.points_off_surface; border += r.border_pieces; put += r.curves; failed += r.failed_walks;
     }
-    if(off < points && put == 0 && border > 0)
-      throw Input_error(border_file, border_line, "no curve left on the surface: it runs along the "
-                        "border of the mesh (" + std::to_string(border) + (border == 1 ? " piece" : " pieces") + " dropped), "
-                        "and curves may end on the border, not run along it");
+    const std::string why = no_curve_left_reason(points, off, border, put, failed, "the mean edge length");
+    if(off < points && put == 0 && border > 0) throw Input_error(border_file, border_line, why);
     const bool polylines = !curves.polylines_file.empty();
-    std::string why = "no curve left on the surface: what was put on it cancels out (the polylines run back along "
-                      "themselves, every edge as often in one direction as in the other)";
-    if(off == points) why = "no curve on the surface (every point is farther than the mean edge length from it)";
-    else if(put == 0 && failed > 0)
-      why = "no curve left on the surface: the walk along the surface could not follow any segment between points on "
-            "it (" + std::to_string(failed) + " failed: the segments leave the surface or reach its border)";
-    else if(put == 0)
-      why = "no curve left on the surface: the polylines cross no edge of the mesh (each stays inside one face); "
-            "draw longer strokes or refine the mesh";
     throw Input_error(polylines ? curves.polylines_file : curves.stamp_file, off == points ? 0 : first_line_on_surface, why);
   }
   cut.chain.assign(mesh.number_of_edges(), 0);

@@ -328,6 +328,27 @@ inline Svg_drawing read_svg_polylines(const std::string& file)
   return read_svg_polylines(is, file);
 }
 
+// Why no curve is left on the surface once polylines are put on it (polylines_to_chain()'s counts, summed
+// over the files): the points, those farther from the surface than `tolerance` (its wording), the pieces
+// along the border, the curves put on the mesh and the failed walks. The tool's and Python's message.
+inline std::string no_curve_left_reason(std::size_t points, std::size_t off_surface, std::size_t border_pieces,
+                                        std::size_t curves, std::size_t failed_walks, const std::string& tolerance)
+{
+  if(off_surface == points)
+    return "no curve on the surface (every point is farther than " + tolerance + " from it)";
+  if(curves == 0 && border_pieces > 0)
+    return "no curve left on the surface: it runs along the border of the mesh (" + std::to_string(border_pieces) +
+           (border_pieces == 1 ? " piece" : " pieces") + " dropped), and curves may end on the border, not run along it";
+  if(curves == 0 && failed_walks > 0)
+    return "no curve left on the surface: the walk along the surface could not follow any segment between points on "
+           "it (" + std::to_string(failed_walks) + " failed: the segments leave the surface or reach its border)";
+  if(curves == 0)
+    return "no curve left on the surface: the polylines cross no edge of the mesh (each stays inside one face); "
+           "draw longer strokes or refine the mesh";
+  return "no curve left on the surface: what was put on it cancels out (the polylines run back along themselves, "
+         "every edge as often in one direction as in the other)";
+}
+
 } // namespace IO
 } // namespace Surface_winding_numbers
 } // namespace CGAL
