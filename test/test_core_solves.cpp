@@ -1,6 +1,9 @@
 // test_core: the linear solves (JumpLaplace, NestedDissection).
 #include "test_core_support.h"
 
+#include <map>
+#include <utility>
+
 // =============================================================================================
 // JumpLaplace (jump_laplace.h)
 // =============================================================================================
@@ -276,6 +279,30 @@ long cholesky_fill(std::size_t n, const std::vector<std::size_t>& first, const s
 }
 
 } // namespace
+
+// internal::assembled_matrix(): a traits matrix that wraps an Eigen matrix is filled through it, any other
+// by add_coef(); both sum duplicate entries, and the entry list is emptied with its memory
+TEST(JumpLaplace, AssembledMatricesSumDuplicateEntriesWithEitherFill)
+{
+  struct Map_matrix   // a traits matrix that only has add_coef()
+  {
+    std::map<std::pair<int, int>, double> a;
+    Map_matrix(int, int) {}
+    void add_coef(int i, int j, double v) { a[{i, j}] += v; }
+  };
+  const std::vector<SI::Matrix_entry> list = {{0, 0, 1.}, {1, 0, 2.}, {0, 0, 3.}, {2, 2, -1.}, {1, 0, 0.5}, {0, 2, 7.}};
+  std::vector<SI::Matrix_entry> by_add = list, by_eigen = list;
+  const auto M = SI::assembled_matrix<Map_matrix>(3, by_add);
+  const auto E = SI::assembled_matrix<CGAL::Eigen_sparse_matrix<double>>(3, by_eigen);
+  EXPECT_TRUE(by_add.empty() && by_eigen.empty());
+  EXPECT_EQ(by_add.capacity() + by_eigen.capacity(), 0u);
+  EXPECT_EQ(M->a.size(), 4u);
+  EXPECT_EQ(M->a.at({0, 0}), 4.);
+  EXPECT_EQ(M->a.at({1, 0}), 2.5);
+  for(int i = 0; i < 3; ++i)
+    for(int j = 0; j < 3; ++j)
+      EXPECT_EQ(E->get_coef(i, j), M->a.count({i, j}) ? M->a.at({i, j}) : 0.) << i << ", " << j;
+}
 
 TEST(NestedDissection, OrdersAreFillReducingPermutations)
 {
