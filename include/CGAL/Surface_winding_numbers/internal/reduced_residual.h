@@ -26,9 +26,12 @@ namespace internal {
 // completion chain (to be added to Gamma). Unlike the authors' code, the Dijkstra weights are the
 // edge lengths (their code gives infinite weight to the edges off the curve, a documented slip).
 // `weight(p, v, x, e, x_departs)`: the length of edge e from v to x on a path from p (infinite: not taken),
-// x_departs when x is an interior endpoint where curves depart.
+// x_departs when x is an interior endpoint where curves depart. The arrival endpoints are taken in vertex
+// order, or with `shortest_first` the one with the shortest join of all first (then the joins whose
+// departure endpoint was taken are searched again): a completion that does not depend on the numbering.
 template <class Weight>
-std::vector<double> shortest_path_completion(const Mesh_tables& m, const std::vector<double>& chain, Weight weight)
+std::vector<double> shortest_path_completion(const Mesh_tables& m, const std::vector<double>& chain, Weight weight,
+                                             bool shortest_first = false)
 {
   std::vector<double> d = chain_boundary(m, chain);
   std::vector<double> completion(m.ne, 0.);
@@ -42,47 +45,79 @@ std::vector<double> shortest_path_completion(const Mesh_tables& m, const std::ve
     adjacent[j].emplace_back(i, a.edge);
   }
   auto is_target = [&](std::size_t v) { return !m.vertex_on_border[v] && d[v] < -chain_tolerance; };
-  std::vector<double> dist(m.nv);
-  std::vector<std::size_t> pred_edge(m.nv), pred_vertex(m.nv);
-  for(std::size_t p = 0; p < m.nv; ++p)
-  {
-    while(!m.vertex_on_border[p] && d[p] > chain_tolerance)
+  const double infinity = std::numeric_limits<double>::infinity();
+  std::vector<double> dist(m.nv, infinity);
+  std::vector<std::size_t> pred_edge(m.nv), pred_vertex(m.nv), touched;
+  struct Join { double length; std::size_t target; std::vector<std::size_t> path; };   // path: (vertex, edge) pairs
+  // Dijkstra from p to the nearest departure endpoint, else to the nearest border vertex (target npos: none)
+  auto search = [&](std::size_t p) {
+    for(std::size_t t : touched) dist[t] = infinity;
+    touched.assign(1, p);
+    typedef std::pair<double, std::size_t> Item;
+    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+    dist[p] = 0;
+    queue.emplace(0., p);
+    std::size_t target = npos, border = npos;
+    while(!queue.empty())
     {
-      // Dijkstra from p to the nearest departure endpoint, else to the nearest border vertex
-      std::fill(dist.begin(), dist.end(), std::numeric_limits<double>::infinity());
-      std::fill(pred_edge.begin(), pred_edge.end(), npos);
-      typedef std::pair<double, std::size_t> Item;
-      std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
-      dist[p] = 0;
-      queue.emplace(0., p);
-      std::size_t target = npos, border = npos;
-      while(!queue.empty())
+      const Item top = queue.top();
+      queue.pop();
+      const std::size_t v = top.second;
+      if(top.first > dist[v]) continue;
+      if(v != p && is_target(v)) { target = v; break; }
+      if(v != p && m.vertex_on_border[v] && border == npos) border = v;
+      for(const auto& ne : adjacent[v])
       {
-        const Item top = queue.top();
-        queue.pop();
-        const std::size_t v = top.second;
-        if(top.first > dist[v]) continue;
-        if(v != p && is_target(v)) { target = v; break; }
-        if(v != p && m.vertex_on_border[v] && border == npos) border = v;
-        for(const auto& ne : adjacent[v])
-        {
-          const double w = weight(p, v, ne.first, ne.second, is_target(ne.first));
-          if(!(w < std::numeric_limits<double>::infinity())) continue;
-          const double nd = dist[v] + w;
-          if(nd < dist[ne.first]) { dist[ne.first] = nd; pred_edge[ne.first] = ne.second; pred_vertex[ne.first] = v; queue.emplace(nd, ne.first); }
-        }
+        const double w = weight(p, v, ne.first, ne.second, is_target(ne.first));
+        const double nd = dist[v] + w;
+        if(!(w < infinity) || !(nd < dist[ne.first])) continue;
+        if(dist[ne.first] == infinity) touched.push_back(ne.first);
+        dist[ne.first] = nd; pred_edge[ne.first] = ne.second; pred_vertex[ne.first] = v; queue.emplace(nd, ne.first);
       }
-      if(target == npos) target = border;
-      if(target == npos) break;   // nothing reachable: the gap stays open
-      // add the path p -> target: +1 along it
-      for(std::size_t v = target; v != p; v = pred_vertex[v])
-      {
-        const std::size_t e = pred_edge[v];
-        completion[e] += (m.ev[2 * e + 1] == v) ? 1. : -1.;
-      }
-      d[p] -= 1.;
-      d[target] += 1.;
     }
+    if(target == npos) target = border;
+    Join join{infinity, target, {}};
+    if(target == npos) return join;
+    join.length = dist[target];
+    for(std::size_t v = target; v != p; v = pred_vertex[v]) { join.path.push_back(v); join.path.push_back(pred_edge[v]); }
+    return join;
+  };
+  // add the path p -> target: +1 along it
+  auto add = [&](std::size_t p, const Join& join) {
+    for(std::size_t k = 0; k < join.path.size(); k += 2)
+    {
+      const std::size_t v = join.path[k], e = join.path[k + 1];
+      completion[e] += (m.ev[2 * e + 1] == v) ? 1. : -1.;
+    }
+    d[p] -= 1.;
+    d[join.target] += 1.;
+  };
+  if(!shortest_first)
+  {
+    for(std::size_t p = 0; p < m.nv; ++p)
+      while(!m.vertex_on_border[p] && d[p] > chain_tolerance)
+      {
+        const Join join = search(p);
+        if(join.target == npos) break;   // nothing reachable: the gap stays open
+        add(p, join);
+      }
+    return completion;
+  }
+  std::vector<std::size_t> ends;
+  std::vector<Join> joins;
+  for(std::size_t p = 0; p < m.nv; ++p)
+    if(!m.vertex_on_border[p] && d[p] > chain_tolerance) { ends.push_back(p); joins.push_back(search(p)); }
+  for(;;)
+  {
+    std::size_t best = npos;
+    for(std::size_t i = 0; i < ends.size(); ++i)
+      if(d[ends[i]] > chain_tolerance && joins[i].target != npos && (best == npos || joins[i].length < joins[best].length)) best = i;
+    if(best == npos) break;   // the ends left have nothing reachable
+    const std::size_t target = joins[best].target;
+    add(ends[best], joins[best]);
+    for(std::size_t i = 0; i < ends.size(); ++i)
+      if(d[ends[i]] > chain_tolerance && (i == best || (joins[i].target == target && !m.vertex_on_border[target] && !is_target(target))))
+        joins[i] = search(ends[i]);
   }
   return completion;
 }
@@ -96,7 +131,8 @@ inline std::vector<double> shortest_path_completion(const Mesh_tables& m, const 
 // but following the curve's direction at both ends of a gap: a path leaves its arrival endpoint p forward
 // (its first edge at an acute angle to the direction the curve arrives in) and reaches a departure endpoint
 // from behind (its last edge at an acute angle to the direction the curve departs in). The direction at an
-// endpoint is the sum of the unit directions of travel of the curve edges there.
+// endpoint is the sum of the unit directions of travel of the curve edges there. The shortest joins are
+// made first.
 inline std::vector<double> directed_completion(const Mesh_tables& m, const std::vector<double>& chain)
 {
   const std::vector<double> d = chain_boundary(m, chain);
@@ -119,7 +155,7 @@ inline std::vector<double> directed_completion(const Mesh_tables& m, const std::
   return shortest_path_completion(m, chain, [&](std::size_t p, std::size_t v, std::size_t x, std::size_t e, bool x_departs) {
     if((v == p && !ahead(p, x, p)) || (x_departs && !ahead(v, x, x))) return std::numeric_limits<double>::infinity();
     return m.edge_length(e);
-  });
+  }, true);
 }
 
 // The reduced residual problem (paper Sec. 6): after completing the gaps, the faces are grouped
