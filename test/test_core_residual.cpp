@@ -536,17 +536,18 @@ TEST(BeyondEq11, DirectedCompletionContinuesTheCurveRoundTheHandle)
 
 TEST(BeyondEq11, DirectedCompletionMakesTheShortestJoinsFirst)
 {
-  // Two rows of a grid, each a curve going right with a gap: row 4 from the border to (2, 4), again from
-  // (3, 4) to the border; row 3 from the border to (2, 3), again from (6, 3). The end (2, 3) comes first in
-  // vertex order and is nearer to (3, 4) (at most 1 + sqrt 2 + 1) than to (6, 3) (4); the shortest join of
-  // all, (2, 4) -> (3, 4), is made first, so each gap is closed along its row.
+  // Two rows of a grid, each a curve going right with a gap: row 5 from the border to (2, 5), again from
+  // (3, 5) to the border; row 4 from the border to (2, 4), again from (6, 4). The end (2, 4) comes first in
+  // vertex order, and the directed search taken in vertex order closes the gaps otherwise (checked once,
+  // 2026-12-07); the shortest join of all, (2, 5) -> (3, 5), is made first, so each gap is closed along
+  // its row.
   const Grid_tables g(8, 9, 0.);
   std::vector<Vertex> a, b, c, e;
-  for(int i = 0; i <= 2; ++i) { a.push_back(g.V(i, 4)); c.push_back(g.V(i, 3)); }
-  for(int i = 3; i <= 8; ++i) b.push_back(g.V(i, 4));
-  for(int i = 6; i <= 8; ++i) e.push_back(g.V(i, 3));
+  for(int i = 0; i <= 2; ++i) { a.push_back(g.V(i, 5)); c.push_back(g.V(i, 4)); }
+  for(int i = 3; i <= 8; ++i) b.push_back(g.V(i, 5));
+  for(int i = 6; i <= 8; ++i) e.push_back(g.V(i, 4));
   const std::vector<double> chain = g.chain({a, b, c, e});
-  std::vector<Vertex> row3;
-  for(int i = 2; i <= 6; ++i) row3.push_back(g.V(i, 3));
-  EXPECT_EQ(SI::directed_completion(g.tables(), chain), g.chain({{g.V(2, 4), g.V(3, 4)}, row3}));
+  std::vector<Vertex> row4;
+  for(int i = 2; i <= 6; ++i) row4.push_back(g.V(i, 4));
+  EXPECT_EQ(SI::directed_completion(g.tables(), chain), g.chain({{g.V(2, 5), g.V(3, 5)}, row4}));
 }
