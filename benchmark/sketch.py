@@ -40,22 +40,24 @@ def main(nu=316, nv=158, strokes=8):
                   [at(i0 + side - t, j0 + side) for t in range(side)] + [at(i0, j0 + side - t) for t in range(side - 1)])
         return [meridian, [int(x) for x in square]]   # the square with a gap of one edge
 
-    # the strokes one after the other on one solver, as a sketching session runs them; the fresh solves
-    # that check them come afterwards (between re-solves they would leave the allocator's heap grown)
+    # the strokes one after the other on one solver, as a sketching session runs them (the last result kept
+    # while the next is solved, the labels and G of each kept for the check); the fresh solves that check them
+    # come afterwards (between re-solves they would leave the allocator's heap grown)
     results = []
     for k in range(strokes):
+        stroke = curves(k)
         t0 = time.perf_counter()
-        r = solver.solve(curves(k))
+        r = solver.solve(stroke)
         t1 = time.perf_counter()
-        results.append(r)
+        results.append((r.W.copy(), r.G.copy()))
         print(f"stroke {k}: re-solve {t1 - t0:.3f} s (residual step {r.report['times']['residual']:.3f} s, "
               f"warm {r.report['residual_warm_started']}, "
               f"jump Laplacian update rank {r.report['jump_laplacian_update_rank']})")
-    for k, r in enumerate(results):
+    for k, (W, G) in enumerate(results):
         t1 = time.perf_counter()
         fresh = swn.winding_numbers(V, F, curves(k))
         t2 = time.perf_counter()
-        same = (r.W == fresh.W).all() and (r.G == fresh.G).all()
+        same = (W == fresh.W).all() and (G == fresh.G).all()
         print(f"stroke {k}: fresh {t2 - t1:.3f} s, {'same' if same else 'DIFFERENT'} labels and G")
         if not same:
             return 1
