@@ -278,8 +278,8 @@ def winding_numbers(V, F, curves=None, multiplicities=None, *, dual_chain=None, 
     area), ``confidence`` (``True``: the result's ``confidence``, a ``LabelConfidence``; on a soup per
     input polygon), ``concurrency`` (``False``: the calling thread only), ``verbose`` (the steps on stderr),
     ``completed_homology_class`` (``True``: for a broken curve, the residual problem in the homology class of
-    the curve with its gaps closed by shortest paths instead of the harmonic part's; off by default, see the
-    manual's "Beyond Eq. 11").
+    the curve with its gaps closed by shortest paths that continue the curve's direction at their ends, instead
+    of the harmonic part's; off by default, see the manual's "Beyond Eq. 11").
 
     Returns a ``WindingNumbers``. Raises ``ValueError`` on bad input and bad settings and ``RuntimeError``
     when the solver fails, with the library's messages.
