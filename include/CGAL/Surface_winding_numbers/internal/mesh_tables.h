@@ -189,19 +189,12 @@ inline double mean_interior_edge_length(const Mesh_tables& m)
 
 // Per component: 1 if its faces can be oriented so that every edge with exactly two faces is
 // traversed once each way (edges with more faces are not considered), 0 otherwise (a Moebius strip).
-// Found by propagating a flip bit across the arcs of two-sided edges (breadth first per component).
+// Found by propagating a flip bit across the two-sided edges, from each face's sides to the other
+// side of their edge (depth first per component). Without nonorientable arcs no flip is needed at all.
 inline std::vector<char> component_orientable(const Mesh_tables& m)
 {
   std::vector<char> orientable(m.n_components, 1);
-  std::vector<std::vector<std::pair<std::size_t, char>>> next(m.nf);   // face -> (face, flip between them)
-  for(const Arc& a : m.arcs)
-  {
-    if(m.edge_side_begin[a.edge + 1] - m.edge_side_begin[a.edge] != 2) continue;
-    const std::size_t f = a.left_side / 3, g = a.right_side / 3;
-    const char flip = m.fs[a.left_side] == m.fs[a.right_side] ? 1 : 0;
-    next[f].emplace_back(g, flip);
-    next[g].emplace_back(f, flip);
-  }
+  if(m.nonorientable_arcs == 0) return orientable;
   std::vector<signed char> flipped(m.nf, -1);
   std::vector<std::size_t> stack;
   for(std::size_t f0 = 0; f0 < m.nf; ++f0)
@@ -213,11 +206,14 @@ inline std::vector<char> component_orientable(const Mesh_tables& m)
     {
       const std::size_t f = stack.back();
       stack.pop_back();
-      for(const auto& gf : next[f])
+      for(std::size_t s = 3 * f; s < 3 * f + 3; ++s)
       {
-        const signed char want = static_cast<signed char>(flipped[f] ^ gf.second);
-        if(flipped[gf.first] == -1) { flipped[gf.first] = want; stack.push_back(gf.first); }
-        else if(flipped[gf.first] != want) orientable[m.face_component[f]] = 0;
+        const std::size_t b = m.edge_side_begin[m.fe[s]];
+        if(m.edge_side_begin[m.fe[s] + 1] - b != 2) continue;
+        const std::size_t t = m.edge_sides[b] == s ? m.edge_sides[b + 1] : m.edge_sides[b], g = t / 3;
+        const signed char want = static_cast<signed char>(flipped[f] ^ (m.fs[s] == m.fs[t] ? 1 : 0));
+        if(flipped[g] == -1) { flipped[g] = want; stack.push_back(g); }
+        else if(flipped[g] != want) orientable[m.face_component[f]] = 0;
       }
     }
   }
