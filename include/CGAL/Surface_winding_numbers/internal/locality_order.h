@@ -4,12 +4,14 @@
 // A cache-friendly numbering of the flat mesh tables. Every stage after the tables walks faces,
 // sides and arcs and reads their neighbours (assembly, reduced coordinates, the residual network,
 // its maximum flows); with the numbering a mesh file happens to have (remeshers and editors leave
-// it close to random) nearly every such read is a cache miss. Faces are renumbered along a Morton
-// (Z-order) curve through their centroids, vertices and edges in the order those faces first use
-// them, so that elements close on the surface are close in memory; applied when the input's own
-// numbering is scattered (numbering_is_scattered()). Measured in
-// benchmark/RESULTS.md (Speed, 2026-12-02): the residual summed over the benchmark's cases with handles
-// 87 -> 68 s, the 1.15M-face genus-10 case 134 -> 96 s.
+// it close to random) nearly every such read is a cache miss. Faces are renumbered breadth first
+// across their edges, each connected component from its first face along a Morton (Z-order) curve
+// through the centroids, vertices and edges in the order those faces first use them, so that
+// elements close on the surface are close in memory; applied when the input's own numbering is
+// scattered (numbering_is_scattered()). Measured in benchmark/RESULTS.md (Speed, 2026-12-02; Morton
+// order then): the residual summed over the benchmark's cases with handles 87 -> 68 s, the 1.15M-face
+// genus-10 case 134 -> 96 s; breadth first instead of Morton order: benchmark/SPEED.md ("Interactive
+// re-solve").
 
 #ifndef CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_LOCALITY_ORDER_H
 #define CGAL_SURFACE_WINDING_NUMBERS_INTERNAL_LOCALITY_ORDER_H
@@ -44,10 +46,37 @@ inline std::uint64_t spread_bits_3(std::uint64_t x)
   return x;
 }
 
-// Faces in Morton order of their centroids (21 bits per axis over the bounding box of the finite
-// coordinates; ties and non-finite centroids keep their relative input order), then vertices and
-// edges by first use in that face order; vertices and edges no face uses come last, in input order.
-// Needs points, fv, fe and the sizes of m.
+// The faces in breadth-first order across their edges (every face that shares an edge with one, in
+// the order of its sides), each connected component from its first face in `seeds` (face, in order).
+inline std::vector<std::size_t> breadth_first_faces(const Mesh_tables& m,
+                                                    const std::vector<std::pair<std::uint64_t, std::size_t>>& seeds)
+{
+  std::vector<std::size_t> first(m.ne + 1, 0), edge_faces(3 * m.nf);   // edge -> the faces of its sides
+  for(std::size_t s = 0; s < 3 * m.nf; ++s) ++first[m.fe[s] + 1];
+  for(std::size_t e = 0; e < m.ne; ++e) first[e + 1] += first[e];
+  std::vector<std::size_t> next(first.begin(), first.end() - 1);
+  for(std::size_t s = 0; s < 3 * m.nf; ++s) edge_faces[next[m.fe[s]]++] = s / 3;
+  std::vector<char> seen(m.nf, 0);
+  std::vector<std::size_t> order;
+  order.reserve(m.nf);
+  for(const auto& seed : seeds)
+  {
+    if(seen[seed.second]) continue;
+    seen[seed.second] = 1;
+    order.push_back(seed.second);
+    for(std::size_t q = order.size() - 1; q < order.size(); ++q)
+      for(std::size_t s = 3 * order[q]; s < 3 * order[q] + 3; ++s)
+        for(std::size_t j = first[m.fe[s]]; j < first[m.fe[s] + 1]; ++j)
+          if(!seen[edge_faces[j]]) { seen[edge_faces[j]] = 1; order.push_back(edge_faces[j]); }
+  }
+  return order;
+}
+
+// Faces breadth first across their edges, each connected component from its first face in Morton
+// order of the centroids (21 bits per axis over the bounding box of the finite coordinates; ties and
+// non-finite centroids keep their relative input order), then vertices and edges by first use in that
+// face order; vertices and edges no face uses come last, in input order. Needs points, fv, fe and the
+// sizes of m.
 inline Table_numbering locality_numbering(const Mesh_tables& m)
 {
   double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
@@ -79,6 +108,7 @@ inline Table_numbering locality_numbering(const Mesh_tables& m)
     key[f] = {code, f};
   }
   std::sort(key.begin(), key.end());
+  const std::vector<std::size_t> order = breadth_first_faces(m, key);
 
   Table_numbering n;
   n.face.assign(m.nf, npos);
@@ -87,7 +117,7 @@ inline Table_numbering locality_numbering(const Mesh_tables& m)
   std::size_t nv = 0, ne = 0;
   for(std::size_t i = 0; i < m.nf; ++i)
   {
-    const std::size_t f = key[i].second;
+    const std::size_t f = order[i];
     n.face[f] = i;
     for(std::size_t k = 0; k < 3; ++k)
     {
