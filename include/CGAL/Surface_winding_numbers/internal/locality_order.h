@@ -51,11 +51,8 @@ inline std::uint64_t spread_bits_3(std::uint64_t x)
 inline std::vector<std::size_t> breadth_first_faces(const Mesh_tables& m,
                                                     const std::vector<std::pair<std::uint64_t, std::size_t>>& seeds)
 {
-  std::vector<std::size_t> first(m.ne + 1, 0), edge_faces(3 * m.nf);   // edge -> the faces of its sides
-  for(std::size_t s = 0; s < 3 * m.nf; ++s) ++first[m.fe[s] + 1];
-  for(std::size_t e = 0; e < m.ne; ++e) first[e + 1] += first[e];
-  std::vector<std::size_t> next(first.begin(), first.end() - 1);
-  for(std::size_t s = 0; s < 3 * m.nf; ++s) edge_faces[next[m.fe[s]]++] = s / 3;
+  std::vector<std::size_t> first, edge_sides;   // edge -> sides (the tables are not finalized yet)
+  group_by_key(m.fe, m.ne, first, edge_sides);
   std::vector<char> seen(m.nf, 0);
   std::vector<std::size_t> order;
   order.reserve(m.nf);
@@ -67,7 +64,7 @@ inline std::vector<std::size_t> breadth_first_faces(const Mesh_tables& m,
     for(std::size_t q = order.size() - 1; q < order.size(); ++q)
       for(std::size_t s = 3 * order[q]; s < 3 * order[q] + 3; ++s)
         for(std::size_t j = first[m.fe[s]]; j < first[m.fe[s] + 1]; ++j)
-          if(!seen[edge_faces[j]]) { seen[edge_faces[j]] = 1; order.push_back(edge_faces[j]); }
+          if(!seen[edge_sides[j] / 3]) { seen[edge_sides[j] / 3] = 1; order.push_back(edge_sides[j] / 3); }
   }
   return order;
 }

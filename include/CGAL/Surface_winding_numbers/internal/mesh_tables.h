@@ -253,6 +253,20 @@ inline void find_nonmanifold_vertices(Mesh_tables& m)
     m.edge_at_nonmanifold[e] = (m.vertex_nonmanifold[m.ev[2 * e]] || m.vertex_nonmanifold[m.ev[2 * e + 1]]) ? 1 : 0;
 }
 
+// The indices i of `key` grouped by key[i] (keys below n), in compressed rows: the indices with key k are
+// items[begin[k]], ..., items[begin[k + 1] - 1], in increasing order (edge -> sides from fe, vertex ->
+// corners from fv).
+inline void group_by_key(const std::vector<std::size_t>& key, std::size_t n, std::vector<std::size_t>& begin,
+                         std::vector<std::size_t>& items)
+{
+  begin.assign(n + 1, 0);
+  for(const std::size_t k : key) ++begin[k + 1];
+  for(std::size_t k = 0; k < n; ++k) begin[k + 1] += begin[k];
+  items.assign(key.size(), 0);
+  std::vector<std::size_t> fill(begin.begin(), begin.end() - 1);
+  for(std::size_t i = 0; i < key.size(); ++i) items[fill[key[i]]++] = i;
+}
+
 // Completes the tables from points, fv, fe, ev (and nv, nf, ne): orientation signs, incidences,
 // arcs, border flags, vertex corner lists and components. Throws Invalid_input on a side whose
 // endpoints do not match its edge.
@@ -269,15 +283,7 @@ inline void finalize_mesh_tables(Mesh_tables& m)
                            " does not match its edge " + std::to_string(m.input_edge_index(e)));
   }
 
-  // edge -> sides
-  m.edge_side_begin.assign(m.ne + 1, 0);
-  for(std::size_t s = 0; s < nside; ++s) ++m.edge_side_begin[m.fe[s] + 1];
-  for(std::size_t e = 0; e < m.ne; ++e) m.edge_side_begin[e + 1] += m.edge_side_begin[e];
-  m.edge_sides.assign(nside, 0);
-  {
-    std::vector<std::size_t> fill(m.edge_side_begin.begin(), m.edge_side_begin.end() - 1);
-    for(std::size_t s = 0; s < nside; ++s) m.edge_sides[fill[m.fe[s]]++] = s;
-  }
+  group_by_key(m.fe, m.ne, m.edge_side_begin, m.edge_sides);   // edge -> sides
 
   // arcs and border edges
   m.arcs.clear();
@@ -308,14 +314,7 @@ inline void finalize_mesh_tables(Mesh_tables& m)
   }
 
   // vertex -> corners, border vertices
-  m.vertex_corner_begin.assign(m.nv + 1, 0);
-  for(std::size_t c = 0; c < nside; ++c) ++m.vertex_corner_begin[m.fv[c] + 1];
-  for(std::size_t v = 0; v < m.nv; ++v) m.vertex_corner_begin[v + 1] += m.vertex_corner_begin[v];
-  m.vertex_corners.assign(nside, 0);
-  {
-    std::vector<std::size_t> fill(m.vertex_corner_begin.begin(), m.vertex_corner_begin.end() - 1);
-    for(std::size_t c = 0; c < nside; ++c) m.vertex_corners[fill[m.fv[c]]++] = c;
-  }
+  group_by_key(m.fv, m.nv, m.vertex_corner_begin, m.vertex_corners);
   m.vertex_on_border.assign(m.nv, 0);
   for(std::size_t e = 0; e < m.ne; ++e)
     if(m.edge_on_border[e]) m.vertex_on_border[m.ev[2 * e]] = m.vertex_on_border[m.ev[2 * e + 1]] = 1;

@@ -121,9 +121,10 @@ inline bool contract_fixed_arcs(const Residual_problem& P, Context& ctx, Integer
   return true;
 }
 
-// Builds the integer problem (ip: empty, or the last one, whose storage is reused): contraction, then the remaining arcs over the nodes, a breadth-first
-// spanning forest along which the jump is made 0 (components rooted at gauge faces first, so that
-// only the arcs that close a nonzero cycle of s keep a nonzero cost), and the scaling: jumps and
+// Builds the integer problem (ip: empty, or the last one, whose storage is reused): contraction, then
+// the remaining arcs over the nodes, a breadth-first spanning forest along which the jump is made 0
+// (components rooted at gauge faces first, so that only the arcs that close a nonzero cycle of s keep
+// a nonzero cost), and the scaling: jumps and
 // bounds by 2^k with k the largest exponent up to 42 for which no node potential can exceed 2^59,
 // weights by 2^m so that all capacities add up to at most 2^58.
 inline bool build_integer_problem(const Residual_problem& P, Context& ctx, Integer_problem& ip)

@@ -39,7 +39,8 @@ struct Warm_state
   std::vector<Int> x;                   // the certificate's flow, in units of 2^-m
   int m = 0;
   // the finest level's certificate workspace of the last warm solve (its maximum flow's graph and
-  // buffers), for the next warm solve on the same graph: building them anew cost a re-solve page faults
+  // buffers), for the next warm solve on the same graph: building them anew on every re-solve costs
+  // page faults
   std::unique_ptr<Certificate_workspace> workspace;
 
   void clear() { *this = Warm_state(); }
