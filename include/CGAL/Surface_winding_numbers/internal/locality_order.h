@@ -6,8 +6,8 @@
 // its maximum flows); with the numbering a mesh file happens to have (remeshers and editors leave
 // it close to random) nearly every such read is a cache miss. Faces are renumbered breadth first
 // across their edges, each connected component from its first face along a Morton (Z-order) curve
-// through the centroids, vertices and edges in the order those faces first use them, so that
-// elements close on the surface are close in memory; applied when the input's own numbering is
+// through the centroids; vertices and edges follow in the order those faces first use them, so that
+// elements close on the surface are close in memory. Applied when the input's own numbering is
 // scattered (numbering_is_scattered()). Measured in benchmark/RESULTS.md (Speed, 2026-12-02; Morton
 // order then): the residual summed over the benchmark's cases with handles 87 -> 68 s, the 1.15M-face
 // genus-10 case 134 -> 96 s; breadth first instead of Morton order: benchmark/SPEED.md ("Interactive
@@ -47,7 +47,8 @@ inline std::uint64_t spread_bits_3(std::uint64_t x)
 }
 
 // The faces in breadth-first order across their edges (every face that shares an edge with one, in
-// the order of its sides), each connected component from its first face in `seeds` (face, in order).
+// the order of its sides), each connected component from its first face in `seeds` ((key, face)
+// pairs in the order to take them; only the faces are read).
 inline std::vector<std::size_t> breadth_first_faces(const Mesh_tables& m,
                                                     const std::vector<std::pair<std::uint64_t, std::size_t>>& seeds)
 {
